@@ -1,0 +1,58 @@
+// The `coulomb` executable: parse arguments, run one deck. All work is in
+// the library (coulomb::solver::Simulation); this file only reports errors.
+#include <mpi.h>
+
+#include <cstring>
+#include <iostream>
+
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Tpetra_Core.hpp>
+
+#include "coulomb/core/Error.hpp"
+#include "coulomb/solver/Deck.hpp"
+#include "coulomb/solver/Simulation.hpp"
+
+namespace {
+
+void usage(std::ostream& out) {
+  out << "usage: coulomb DECK.xml            run an input deck\n"
+         "       coulomb --help-deck         list every deck parameter (type, default, doc)\n"
+         "       mpirun -np N coulomb DECK.xml\n";
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Tpetra::ScopeGuard tpetra(&argc, &argv);
+  auto comm = Tpetra::getDefaultComm();
+  const bool root = comm->getRank() == 0;
+  if (argc != 2) {
+    if (root) usage(std::cerr);
+    return 2;
+  }
+  const std::string argument = argv[1];
+  if (argument == "--help" || argument == "-h") {
+    if (root) usage(std::cout);
+    return 0;
+  }
+  if (argument == "--help-deck") {
+    if (root) coulomb::solver::printDeckHelp(std::cout);
+    return 0;
+  }
+  try {
+    coulomb::solver::Simulation simulation(argument, comm, &std::cout);
+    simulation.run();
+  } catch (const coulomb::Error& e) {
+    // Every rank throws the same coulomb::Error (see core/Parallel.hpp); one prints it.
+    if (root) std::cerr << "coulomb: error: " << e.what() << std::endl;
+    return 1;
+  } catch (const std::exception& e) {
+    // Not an input problem Coulomb detected: a rank may be alone here, so abort all.
+    std::string message = e.what();
+    for (auto& c : message)
+      if (c == '\n') c = ' ';
+    std::cerr << "coulomb: internal error on rank " << comm->getRank() << ": " << message << std::endl;
+    MPI_Abort(MPI_COMM_WORLD, 3);
+  }
+  return 0;
+}

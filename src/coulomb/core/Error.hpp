@@ -1,0 +1,43 @@
+#pragma once
+/// @file Error.hpp
+/// @brief The one exception type a user sees, and the two checking macros.
+#include <sstream>
+#include <stdexcept>
+#include <string>
+
+namespace coulomb {
+
+/// @brief An error the user can act on: the message names the parameter,
+/// file, set or block that is wrong. The executable prints it on one line
+/// and exits non-zero on every rank.
+class Error : public std::runtime_error {
+public:
+  explicit Error(const std::string& message) : std::runtime_error(message) {}
+};
+
+}  // namespace coulomb
+
+/// Always-on check: throws coulomb::Error with a streamed message.
+/// Example: COULOMB_REQUIRE(E > 0, "Materials/steel: Young's Modulus must be > 0, got " << E);
+#define COULOMB_REQUIRE(condition, message)                 \
+  do {                                                      \
+    if (!(condition)) {                                     \
+      std::ostringstream coulomb_require_stream_;           \
+      coulomb_require_stream_ << message;                   \
+      throw ::coulomb::Error(coulomb_require_stream_.str()); \
+    }                                                       \
+  } while (false)
+
+/// Debug-only check of a programmer invariant (compiled out in Release).
+#ifndef NDEBUG
+#define COULOMB_ASSERT(condition)                                                    \
+  do {                                                                               \
+    if (!(condition))                                                                \
+      throw std::logic_error(std::string("internal error: ") + #condition + " at " + \
+                             __FILE__ + ":" + std::to_string(__LINE__));             \
+  } while (false)
+#else
+#define COULOMB_ASSERT(condition) \
+  do {                            \
+  } while (false)
+#endif

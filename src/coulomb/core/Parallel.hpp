@@ -1,0 +1,18 @@
+#pragma once
+/// @file Parallel.hpp
+/// @brief Agreement on failures that only some ranks can detect, so that
+/// every rank throws the same coulomb::Error and none hangs.
+#include <string>
+
+#include <Teuchos_Comm.hpp>
+
+namespace coulomb {
+
+/// @brief Collective: if any rank passes a non-empty `localMessage`, every
+/// rank throws coulomb::Error with the message of the lowest such rank.
+void throwIfAnyRankFailed(const Teuchos::Comm<int>& comm, const std::string& localMessage);
+
+/// @brief Collective logical or.
+bool anyRank(const Teuchos::Comm<int>& comm, bool local);
+
+}  // namespace coulomb

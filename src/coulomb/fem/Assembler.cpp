@@ -1,0 +1,332 @@
+#include "coulomb/fem/Assembler.hpp"
+
+#include <array>
+
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Export.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "coulomb/core/Error.hpp"
+#include "coulomb/core/Parallel.hpp"
+#include "coulomb/fem/ElementKernel.hpp"
+#include "coulomb/fem/FaceKernel.hpp"
+#include "coulomb/fem/FaceTopology.hpp"
+#include "coulomb/fem/SparsityPattern.hpp"
+#include "coulomb/fem/StressKernel.hpp"
+
+namespace coulomb::fem {
+
+using mesh::CellType;
+using mesh::FaceType;
+
+namespace {
+
+/// A face of a local element carrying a surface load.
+struct LoadedFace {
+  std::size_t condition;
+  std::size_t block;
+  long long element;
+  int side;
+};
+
+}  // namespace
+
+struct Assembler::Impl {
+  const mesh::Mesh& mesh;
+  const DofMap& dofs;
+  ModelSettings model;
+  std::vector<MaterialParameters> blockMaterial;
+  std::vector<LoadedFace> loadedFaces;
+  Teuchos::RCP<const CrsGraph> overlapGraph, ownedGraph;
+  Teuchos::RCP<CrsMatrix> overlapMatrix;
+  Teuchos::RCP<Vector> overlapResidual, overlapU;
+  Teuchos::RCP<Import> ownedToOverlap;
+  Teuchos::RCP<Export> overlapToOwned;
+
+  Impl(const mesh::Mesh& m, const DofMap& d, const ModelSettings& s) : mesh(m), dofs(d), model(s) {}
+
+  const double* coordinates(long long node) const { return &mesh.global().coordinates[node * mesh.dimension()]; }
+
+  std::array<double, 3> bodyForce(std::size_t block, double time) const {
+    std::array<double, 3> f{};
+    for (const auto& b : model.bodyForces) {
+      if (b.block && mesh.blockIndex(*b.block, "Body Forces/" + b.name + "/Block") != block) continue;
+      const double scale = b.function(time);
+      for (int d = 0; d < 3; ++d) f[d] += b.force[d] * scale;
+    }
+    return f;
+  }
+
+  /// Gathers reference coordinates, displacements and overlap DoF indices of one element.
+  template <CellType T>
+  void gather(const long long* cell, const double* u, std::array<double, CellTraits<T>::dofs>& X,
+              std::array<double, CellTraits<T>::dofs>& ue, std::array<int, CellTraits<T>::dofs>& ldof) const {
+    constexpr int dim = CellTraits<T>::dim;
+    for (int a = 0; a < CellTraits<T>::nodes; ++a) {
+      const int local = mesh.localNode(cell[a]);
+      const double* x = coordinates(cell[a]);
+      for (int d = 0; d < dim; ++d) {
+        ldof[a * dim + d] = dofs.localDof(local, d);
+        X[a * dim + d] = x[d];
+        ue[a * dim + d] = u ? u[ldof[a * dim + d]] : 0.0;
+      }
+    }
+  }
+
+  /// Element loop of one block; returns true if an element inverted.
+  template <CellType T>
+  bool assembleBlock(std::size_t b, double time, const double* u, double* r, CrsMatrix* K) const {
+    using Traits = CellTraits<T>;
+    constexpr int n = Traits::nodes, nd = Traits::dofs;
+    const auto& block = mesh.global().blocks[b];
+    const auto force3 = bodyForce(b, time);
+    std::array<double, Traits::dim> force{};
+    for (int d = 0; d < Traits::dim; ++d) force[d] = force3[d];
+    std::array<double, nd> X{}, ue{}, re{};
+    std::array<double, nd * nd> ke{};
+    std::array<int, nd> ldof{};
+    bool inverted = false;
+    for (long long element : mesh.localElements(b)) {
+      gather<T>(&block.connectivity[(element - block.firstElement) * n], u, X, ue, ldof);
+      const KernelStatus status = cellResidualTangent<T>(blockMaterial[b], X, ue, force, re, K ? &ke : nullptr);
+      if (status != KernelStatus::Ok) {
+        inverted = true;
+        continue;
+      }
+      for (int i = 0; i < nd; ++i) r[ldof[i]] += re[i];
+      if (!K) continue;
+      // Prescribed DoFs: zero their rows and columns (identity set after export).
+      for (int i = 0; i < nd; ++i) {
+        if (!constraintsFlag(ldof[i])) continue;
+        for (int j = 0; j < nd; ++j) ke[i * nd + j] = ke[j * nd + i] = 0.0;
+      }
+      for (int i = 0; i < nd; ++i)
+        K->sumIntoLocalValues(ldof[i], Teuchos::ArrayView<const LocalOrdinal>(ldof.data(), nd),
+                              Teuchos::ArrayView<const Scalar>(&ke[i * nd], nd));
+    }
+    return inverted;
+  }
+
+  template <CellType T>
+  std::string checkReferenceBlock(std::size_t b) const {
+    using Traits = CellTraits<T>;
+    const auto& block = mesh.global().blocks[b];
+    std::array<double, Traits::dofs> X{}, ue{}, re{};
+    std::array<int, Traits::dofs> ldof{};
+    const std::array<double, Traits::dim> noForce{};
+    for (long long element : mesh.localElements(b)) {
+      gather<T>(&block.connectivity[(element - block.firstElement) * Traits::nodes], nullptr, X, ue, ldof);
+      if (cellResidualTangent<T>(blockMaterial[b], X, ue, noForce, re, nullptr) == KernelStatus::InvertedReference)
+        return "mesh: element " + std::to_string(element + 1) + " of block '" +
+               mesh::displayName(block.name, "block", block.id) +
+               "' is inverted or degenerate (non-positive Jacobian); check its node order";
+    }
+    return "";
+  }
+
+  template <CellType T>
+  void stressBlock(std::size_t b, const double* u, MultiVector& accumulated) const {
+    using Traits = CellTraits<T>;
+    const auto& block = mesh.global().blocks[b];
+    std::array<double, Traits::dofs> X{}, ue{};
+    std::array<int, Traits::dofs> ldof{};
+    std::array<double, Traits::nodes * 6> weighted{};
+    std::array<double, Traits::nodes> weight{};
+    for (long long element : mesh.localElements(b)) {
+      const long long* cell = &block.connectivity[(element - block.firstElement) * Traits::nodes];
+      gather<T>(cell, u, X, ue, ldof);
+      cellNodalStress<T>(blockMaterial[b], X, ue, weighted, weight);
+      for (int a = 0; a < Traits::nodes; ++a) {
+        const int local = mesh.localNode(cell[a]);
+        for (int k = 0; k < 6; ++k) accumulated.sumIntoLocalValue(local, k, weighted[a * 6 + k]);
+        accumulated.sumIntoLocalValue(local, 6, weight[a]);
+      }
+    }
+  }
+
+  template <FaceType F>
+  void faceForces(const LoadedFace& face, double time, double* r) const {
+    using Traits = FaceTraits<F>;
+    const auto& block = mesh.global().blocks[face.block];
+    const int nodesPerCell = mesh::numNodes(block.cellType);
+    const long long* cell = &block.connectivity[(face.element - block.firstElement) * nodesPerCell];
+    std::array<int, 4> localNodes{};
+    faceLocalNodes(block.cellType, face.side, localNodes);
+    std::array<double, Traits::dofs> X{}, force{};
+    std::array<int, Traits::dofs> ldof{};
+    for (int a = 0; a < Traits::nodes; ++a) {
+      const long long node = cell[localNodes[a]];
+      for (int d = 0; d < Traits::dim; ++d) {
+        X[a * Traits::dim + d] = coordinates(node)[d];
+        ldof[a * Traits::dim + d] = dofs.localDof(mesh.localNode(node), d);
+      }
+    }
+    const auto& c = model.neumann[face.condition];
+    const double scale = c.function(time);
+    const double thickness = blockMaterial[face.block].thickness;
+    if (c.kind == NeumannCondition::Kind::Pressure) {
+      facePressureForces<F>(X, c.pressure * scale, thickness, force);
+    } else {
+      std::array<double, Traits::dim> t{};
+      for (int d = 0; d < Traits::dim; ++d) t[d] = c.traction[d] * scale;
+      faceTractionForces<F>(X, t, thickness, force);
+    }
+    for (int i = 0; i < Traits::dofs; ++i) r[ldof[i]] -= force[i];  // residual = internal − external
+  }
+
+  std::vector<char> constrainedFlags;
+  bool constraintsFlag(int dof) const { return constrainedFlags[dof] != 0; }
+};
+
+namespace {
+
+template <typename Visitor>
+auto dispatchCell(CellType type, Visitor&& visit) {
+  switch (type) {
+    case CellType::Quad4: return visit(std::integral_constant<CellType, CellType::Quad4>{});
+    case CellType::Tri3: return visit(std::integral_constant<CellType, CellType::Tri3>{});
+    case CellType::Hex8: return visit(std::integral_constant<CellType, CellType::Hex8>{});
+    case CellType::Tet4: return visit(std::integral_constant<CellType, CellType::Tet4>{});
+  }
+  throw Error("internal: unknown cell type");
+}
+
+}  // namespace
+
+Assembler::Assembler(const mesh::Mesh& mesh, const DofMap& dofs, const ModelSettings& model)
+    : impl_(std::make_unique<Impl>(mesh, dofs, model)) {
+  const auto& global = mesh.global();
+  impl_->blockMaterial.resize(global.blocks.size());
+  for (std::size_t b = 0; b < global.blocks.size(); ++b) {
+    const std::string name = mesh::displayName(global.blocks[b].name, "block", global.blocks[b].id);
+    const auto it = model.blockMaterials.find(name);
+    COULOMB_REQUIRE(it != model.blockMaterials.end(),
+                    "deck: element block '" << name << "' of the mesh has no sublist in 'Element Blocks'");
+    impl_->blockMaterial[b] = it->second;
+  }
+  for (const auto& [name, material] : model.blockMaterials) mesh.blockIndex(name, "Element Blocks/" + name);
+  for (const auto& b : model.bodyForces)
+    if (b.block) mesh.blockIndex(*b.block, "Body Forces/" + b.name + "/Block");
+  for (std::size_t c = 0; c < model.neumann.size(); ++c) {
+    const auto& set = global.sideSets[mesh.sideSetIndex(model.neumann[c].sideSet,
+                                                         "Neumann Conditions/" + model.neumann[c].name + "/Side Set")];
+    for (std::size_t i = 0; i < set.elements.size(); ++i)
+      if (mesh.elementOwner(set.elements[i]) == mesh.comm()->getRank())
+        impl_->loadedFaces.push_back({c, mesh.blockOfElement(set.elements[i]), set.elements[i], set.sides[i]});
+  }
+  constraints_ = std::make_unique<DirichletConstraints>(mesh, dofs, model.dirichlet);
+  impl_->constrainedFlags.resize(dofs.overlapMap()->getNodeNumElements());
+  for (std::size_t i = 0; i < impl_->constrainedFlags.size(); ++i)
+    impl_->constrainedFlags[i] = constraints_->isConstrained(static_cast<int>(i));
+
+  std::string failure;
+  for (std::size_t b = 0; b < global.blocks.size() && failure.empty(); ++b)
+    failure = dispatchCell(global.blocks[b].cellType, [&](auto tag) { return impl_->checkReferenceBlock<decltype(tag)::value>(b); });
+  throwIfAnyRankFailed(*mesh.comm(), failure);
+
+  impl_->overlapGraph = buildOverlapGraph(mesh, dofs);
+  impl_->ownedGraph = buildOwnedGraph(mesh, dofs);
+  impl_->overlapMatrix = Teuchos::rcp(new CrsMatrix(impl_->overlapGraph));
+  impl_->overlapResidual = Teuchos::rcp(new Vector(dofs.overlapMap()));
+  impl_->overlapU = Teuchos::rcp(new Vector(dofs.overlapMap()));
+  impl_->ownedToOverlap = Teuchos::rcp(new Import(dofs.ownedMap(), dofs.overlapMap()));
+  impl_->overlapToOwned = Teuchos::rcp(new Export(dofs.overlapMap(), dofs.ownedMap()));
+}
+
+Assembler::~Assembler() = default;
+
+Teuchos::RCP<CrsMatrix> Assembler::createMatrix() const {
+  auto matrix = Teuchos::rcp(new CrsMatrix(impl_->ownedGraph));
+  matrix->fillComplete();
+  return matrix;
+}
+
+AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residual, CrsMatrix* jacobian,
+                                   Vector* reactions) {
+  Impl& m = *impl_;
+  m.overlapU->doImport(u, *m.ownedToOverlap, Tpetra::INSERT);
+  m.overlapResidual->putScalar(0.0);
+  CrsMatrix* K = nullptr;
+  if (jacobian) {
+    m.overlapMatrix->resumeFill();
+    m.overlapMatrix->setAllToScalar(0.0);
+    K = m.overlapMatrix.get();
+  }
+  bool inverted = false;
+  {
+    auto uData = m.overlapU->getData(0);
+    auto rData = m.overlapResidual->getDataNonConst(0);
+    for (std::size_t b = 0; b < m.mesh.global().blocks.size(); ++b)
+      inverted |= dispatchCell(m.mesh.global().blocks[b].cellType,
+                               [&](auto tag) { return m.assembleBlock<decltype(tag)::value>(b, time, uData.get(), rData.get(), K); });
+    for (const auto& face : m.loadedFaces) {
+      switch (faceType(m.mesh.global().blocks[face.block].cellType, face.side)) {
+        case FaceType::Line2: m.faceForces<FaceType::Line2>(face, time, rData.get()); break;
+        case FaceType::Tri3: m.faceForces<FaceType::Tri3>(face, time, rData.get()); break;
+        case FaceType::Quad4: m.faceForces<FaceType::Quad4>(face, time, rData.get()); break;
+      }
+    }
+  }
+  AssemblyStatus status;
+  status.invertedElement = anyRank(*m.mesh.comm(), inverted);
+
+  Vector ownedResidual(m.dofs.ownedMap());
+  ownedResidual.doExport(*m.overlapResidual, *m.overlapToOwned, Tpetra::ADD);
+  const auto prescribed = constraints_->ownedConstrainedDofs();
+  if (reactions) {
+    reactions->putScalar(0.0);
+    auto source = ownedResidual.getData(0);
+    auto target = reactions->getDataNonConst(0);
+    for (int dof : prescribed) target[dof] = source[dof];
+  }
+  if (residual) {
+    constraints_->setResidualRows(time, u, ownedResidual);
+    residual->assign(ownedResidual);
+  }
+  if (jacobian) {
+    m.overlapMatrix->fillComplete(m.dofs.ownedMap(), m.dofs.ownedMap());
+    jacobian->resumeFill();
+    jacobian->setAllToScalar(0.0);
+    jacobian->doExport(*m.overlapMatrix, *m.overlapToOwned, Tpetra::ADD);
+    const Scalar one = 1.0;
+    for (int dof : prescribed)  // owned DoFs lead the column map, so row index == column index
+      jacobian->replaceLocalValues(dof, Teuchos::ArrayView<const LocalOrdinal>(&dof, 1),
+                                   Teuchos::ArrayView<const Scalar>(&one, 1));
+    jacobian->fillComplete(m.dofs.ownedMap(), m.dofs.ownedMap());
+  }
+  return status;
+}
+
+void Assembler::nodalStress(const Vector& u, MultiVector& stress) const {
+  const Impl& m = *impl_;
+  Vector overlapU(m.dofs.overlapMap());
+  overlapU.doImport(u, *m.ownedToOverlap, Tpetra::INSERT);
+  const auto overlapNodes = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                                 Teuchos::ArrayView<const GlobalOrdinal>(
+                                                     reinterpret_cast<const GlobalOrdinal*>(m.mesh.localNodes().data()),
+                                                     m.mesh.localNodes().size()),
+                                                 0, m.mesh.comm()));
+  MultiVector accumulated(overlapNodes, 7);
+  {
+    auto uData = overlapU.getData(0);
+    for (std::size_t b = 0; b < m.mesh.global().blocks.size(); ++b)
+      dispatchCell(m.mesh.global().blocks[b].cellType,
+                   [&](auto tag) { m.stressBlock<decltype(tag)::value>(b, uData.get(), accumulated); });
+  }
+  MultiVector owned(m.dofs.ownedNodeMap(), 7);
+  owned.doExport(accumulated, Export(overlapNodes, m.dofs.ownedNodeMap()), Tpetra::ADD);
+  const std::size_t numOwned = m.dofs.ownedNodeMap()->getNodeNumElements();
+  auto in = owned.get2dView();
+  auto out = stress.get2dViewNonConst();
+  for (std::size_t i = 0; i < numOwned; ++i) {
+    const double w = in[6][i];
+    std::array<double, 6> s{};
+    for (int k = 0; k < 6; ++k) s[k] = w > 0 ? in[k][i] / w : 0.0;
+    for (int k = 0; k < 6; ++k) out[k][i] = s[k];
+    out[6][i] = vonMises(s);
+  }
+}
+
+}  // namespace coulomb::fem

@@ -1,0 +1,57 @@
+#pragma once
+/// @file Assembler.hpp
+/// @brief Bulk residual and tangent of all blocks, surface and body loads,
+/// reactions and nodal stress, assembled into Tpetra objects.
+///
+/// Each rank integrates its own elements into overlap objects (rows of every
+/// local node) and exports them, adding, to the owned objects.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Teuchos_RCP.hpp>
+
+#include "coulomb/core/TpetraTypes.hpp"
+#include "coulomb/fem/DirichletConstraints.hpp"
+#include "coulomb/fem/DofMap.hpp"
+#include "coulomb/fem/Material.hpp"
+#include "coulomb/fem/ModelSettings.hpp"
+#include "coulomb/mesh/Mesh.hpp"
+
+namespace coulomb::fem {
+
+/// @brief Outcome of one assembly: an element inverted under the current
+/// displacement (det F <= 0) makes the Newton iterate unusable.
+struct AssemblyStatus {
+  bool invertedElement = false;
+};
+
+class Assembler {
+public:
+  /// Checks every element's reference Jacobian (a non-positive one is an
+  /// input error naming block and element) and builds the sparsity graphs.
+  Assembler(const mesh::Mesh& mesh, const DofMap& dofs, const ModelSettings& model);
+  ~Assembler();
+
+  /// A matrix on the owned graph, to be filled by assemble().
+  Teuchos::RCP<CrsMatrix> createMatrix() const;
+  const DirichletConstraints& constraints() const { return *constraints_; }
+
+  /// residual = f_int(u) − f_ext(t) with prescribed rows u − ū(t); jacobian
+  /// (may be null) its derivative with prescribed rows/columns of the
+  /// identity. Collective. `reactions` (may be null) receives f_int − f_ext
+  /// on prescribed DoFs and zero elsewhere.
+  AssemblyStatus assemble(double time, const Vector& u, Vector* residual, CrsMatrix* jacobian,
+                          Vector* reactions = nullptr);
+
+  /// Nodal Cauchy stress by lumped L2 projection: owned node map, 7 columns
+  /// (xx yy zz xy yz xz, von Mises).
+  void nodalStress(const Vector& u, MultiVector& stress) const;
+
+private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  std::unique_ptr<DirichletConstraints> constraints_;
+};
+
+}  // namespace coulomb::fem

@@ -1,0 +1,185 @@
+/// @file ElementKernel.cpp
+/// @brief Cell residual/tangent: plain-double linear elasticity, neo-Hookean with
+/// a Sacado forward-AD material tangent.
+#include "coulomb/fem/ElementKernel.hpp"
+
+#include <Sacado.hpp>
+
+#include "coulomb/core/Error.hpp"
+#include "coulomb/fem/Quadrature.hpp"
+
+namespace coulomb::fem {
+
+const char* toString(KernelStatus status) {
+  switch (status) {
+    case KernelStatus::Ok: return "ok";
+    case KernelStatus::InvertedReference: return "inverted reference cell (det J <= 0)";
+    case KernelStatus::InvertedCurrent: return "inverted deformed cell (det F <= 0)";
+  }
+  return "unknown kernel status";
+}
+
+namespace {
+
+template <mesh::CellType T>
+KernelStatus fail(KernelStatus status, std::array<double, CellTraits<T>::dofs>& residual,
+                  std::array<double, CellTraits<T>::dofs * CellTraits<T>::dofs>* tangent) {
+  residual.fill(0.0);
+  if (tangent) tangent->fill(0.0);
+  return status;
+}
+
+/// Displacement gradient H_ij = sum_a u_{a i} G_{a j} (row-major dim x dim).
+template <int N, int D>
+std::array<double, D * D> displacementGradient(const std::array<double, N * D>& u, const std::array<double, N * D>& G) {
+  std::array<double, D * D> H{};
+  for (int a = 0; a < N; ++a)
+    for (int i = 0; i < D; ++i)
+      for (int j = 0; j < D; ++j) H[i * D + j] += u[a * D + i] * G[a * D + j];
+  return H;
+}
+
+template <mesh::CellType T>
+KernelStatus linearElastic(const MaterialParameters& material, const std::array<double, CellTraits<T>::dofs>& X,
+                           const std::array<double, CellTraits<T>::dofs>& u,
+                           const std::array<double, CellTraits<T>::dim>& b,
+                           std::array<double, CellTraits<T>::dofs>& residual,
+                           std::array<double, CellTraits<T>::dofs * CellTraits<T>::dofs>* tangent) {
+  constexpr int n = CellTraits<T>::nodes, d = CellTraits<T>::dim, nd = CellTraits<T>::dofs;
+  constexpr ReferenceShape S = CellTraits<T>::shape;
+  const TabulatedShape<S>& tab = tabulatedShape<S>();
+  const double mu = lameParameters(material).mu;
+  const double lam = inPlaneLambda(material, d);
+  const double scale = d == 2 ? material.thickness : 1.0;
+  for (int q = 0; q < tab.points; ++q) {
+    std::array<double, nd> G;
+    const double detJ = physicalGradients<S>(X, tab.dNdxi[q], G);
+    if (!(detJ > 0.0)) return fail<T>(KernelStatus::InvertedReference, residual, tangent);
+    const double wdV = tab.weight[q] * detJ * scale;
+    const std::array<double, d * d> H = displacementGradient<n, d>(u, G);
+    double tr = 0.0;
+    for (int i = 0; i < d; ++i) tr += H[i * d + i];
+    double sigma[d][d];
+    for (int i = 0; i < d; ++i)
+      for (int j = 0; j < d; ++j) sigma[i][j] = mu * (H[i * d + j] + H[j * d + i]) + (i == j ? lam * tr : 0.0);
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < d; ++i) {
+        double s = -tab.N[q][a] * b[i];
+        for (int j = 0; j < d; ++j) s += sigma[i][j] * G[a * d + j];
+        residual[a * d + i] += wdV * s;
+      }
+    if (!tangent) continue;
+    auto& K = *tangent;
+    for (int a = 0; a < n; ++a)
+      for (int bb = 0; bb < n; ++bb) {
+        const double* Ga = &G[a * d];
+        const double* Gb = &G[bb * d];
+        double dot = 0.0;
+        for (int j = 0; j < d; ++j) dot += Ga[j] * Gb[j];
+        for (int i = 0; i < d; ++i) {
+          double* row = &K[(a * d + i) * nd + bb * d];
+          for (int k = 0; k < d; ++k)
+            row[k] += wdV * (lam * Ga[i] * Gb[k] + mu * Ga[k] * Gb[i] + (i == k ? mu * dot : 0.0));
+        }
+      }
+  }
+  return KernelStatus::Ok;
+}
+
+template <mesh::CellType T>
+KernelStatus neoHookean(const MaterialParameters& material, const std::array<double, CellTraits<T>::dofs>& X,
+                        const std::array<double, CellTraits<T>::dofs>& u, const std::array<double, CellTraits<T>::dim>& b,
+                        std::array<double, CellTraits<T>::dofs>& residual,
+                        std::array<double, CellTraits<T>::dofs * CellTraits<T>::dofs>* tangent) {
+  constexpr int n = CellTraits<T>::nodes, d = CellTraits<T>::dim, nd = CellTraits<T>::dofs;
+  constexpr ReferenceShape S = CellTraits<T>::shape;
+  using Fad = Sacado::Fad::SFad<double, d * d>;
+  COULOMB_REQUIRE(d == 3 || material.plane == PlaneAssumption::PlaneStrain,
+                  "the neo-Hookean model supports plane strain only in 2D");
+  const TabulatedShape<S>& tab = tabulatedShape<S>();
+  const LameParameters lame = lameParameters(material);
+  const double scale = d == 2 ? material.thickness : 1.0;
+  for (int q = 0; q < tab.points; ++q) {
+    std::array<double, nd> G;
+    const double detJ = physicalGradients<S>(X, tab.dNdxi[q], G);
+    if (!(detJ > 0.0)) return fail<T>(KernelStatus::InvertedReference, residual, tangent);
+    const double wdV = tab.weight[q] * detJ * scale;
+    std::array<double, d * d> F = displacementGradient<n, d>(u, G);
+    for (int i = 0; i < d; ++i) F[i * d + i] += 1.0;
+    const double detF = d == 2 ? F[0] * F[3] - F[1] * F[2]
+                               : F[0] * (F[4] * F[8] - F[5] * F[7]) - F[1] * (F[3] * F[8] - F[5] * F[6]) +
+                                     F[2] * (F[3] * F[7] - F[4] * F[6]);
+    if (!(detF > 0.0)) return fail<T>(KernelStatus::InvertedCurrent, residual, tangent);
+
+    std::array<double, d * d> P;
+    double A[d * d][d * d] = {};  // A[iJ][kL] = dP_iJ / dF_kL (filled only with a tangent)
+    if (tangent) {
+      std::array<Fad, d * d> Ff, Pf;
+      for (int k = 0; k < d * d; ++k) Ff[k] = Fad(d * d, k, F[k]);
+      neoHookeanFirstPiola<Fad, d>(lame.mu, lame.lambda, Ff, Pf);
+      for (int k = 0; k < d * d; ++k) {
+        P[k] = Pf[k].val();
+        for (int m = 0; m < d * d; ++m) A[k][m] = Pf[k].dx(m);
+      }
+    } else {
+      neoHookeanFirstPiola<double, d>(lame.mu, lame.lambda, F, P);
+    }
+
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < d; ++i) {
+        double s = -tab.N[q][a] * b[i];
+        for (int J = 0; J < d; ++J) s += P[i * d + J] * G[a * d + J];
+        residual[a * d + i] += wdV * s;
+      }
+    if (!tangent) continue;
+    auto& K = *tangent;
+    for (int a = 0; a < n; ++a) {
+      // AG[i][k][L] = sum_J G_aJ A[iJ][kL]
+      double AG[d][d][d] = {};
+      for (int i = 0; i < d; ++i)
+        for (int J = 0; J < d; ++J) {
+          const double g = G[a * d + J];
+          for (int k = 0; k < d; ++k)
+            for (int L = 0; L < d; ++L) AG[i][k][L] += g * A[i * d + J][k * d + L];
+        }
+      for (int bb = 0; bb < n; ++bb)
+        for (int i = 0; i < d; ++i) {
+          double* row = &K[(a * d + i) * nd + bb * d];
+          for (int k = 0; k < d; ++k) {
+            double s = 0.0;
+            for (int L = 0; L < d; ++L) s += AG[i][k][L] * G[bb * d + L];
+            row[k] += wdV * s;
+          }
+        }
+    }
+  }
+  return KernelStatus::Ok;
+}
+
+}  // namespace
+
+template <mesh::CellType T>
+KernelStatus cellResidualTangent(const MaterialParameters& material, const std::array<double, CellTraits<T>::dofs>& X,
+                                 const std::array<double, CellTraits<T>::dofs>& u,
+                                 const std::array<double, CellTraits<T>::dim>& bodyForce,
+                                 std::array<double, CellTraits<T>::dofs>& residual,
+                                 std::array<double, CellTraits<T>::dofs * CellTraits<T>::dofs>* tangent) {
+  residual.fill(0.0);
+  if (tangent) tangent->fill(0.0);
+  if (material.model == MaterialModel::NeoHookean)
+    return neoHookean<T>(material, X, u, bodyForce, residual, tangent);
+  return linearElastic<T>(material, X, u, bodyForce, residual, tangent);
+}
+
+#define COULOMB_INSTANTIATE_CELL(T)                                                                            \
+  template KernelStatus cellResidualTangent<T>(                                                                \
+      const MaterialParameters&, const std::array<double, CellTraits<T>::dofs>&,                               \
+      const std::array<double, CellTraits<T>::dofs>&, const std::array<double, CellTraits<T>::dim>&,            \
+      std::array<double, CellTraits<T>::dofs>&, std::array<double, CellTraits<T>::dofs * CellTraits<T>::dofs>*);
+COULOMB_INSTANTIATE_CELL(mesh::CellType::Quad4)
+COULOMB_INSTANTIATE_CELL(mesh::CellType::Tri3)
+COULOMB_INSTANTIATE_CELL(mesh::CellType::Hex8)
+COULOMB_INSTANTIATE_CELL(mesh::CellType::Tet4)
+#undef COULOMB_INSTANTIATE_CELL
+
+}  // namespace coulomb::fem

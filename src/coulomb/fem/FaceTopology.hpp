@@ -1,0 +1,21 @@
+#pragma once
+/// @file FaceTopology.hpp
+/// @brief Exodus side numbering of the bulk cells: which local nodes form side s.
+///
+/// Sides are 0-based here (Exodus side number minus one). Face nodes are returned in
+/// the Exodus order, which for a positively oriented cell makes the right-hand-rule
+/// normal point out of the cell (2D: edge a->b has outward normal (dy, -dx)).
+#include <array>
+
+#include "coulomb/mesh/CellType.hpp"
+
+namespace coulomb::fem {
+
+/// @brief Topology of side `side` (0-based) of a cell; throws coulomb::Error on a bad side.
+mesh::FaceType faceType(mesh::CellType cell, int side);
+
+/// @brief Local (0-based) cell nodes of side `side` (0-based), outward-oriented; returns the
+/// node count (unused entries are set to -1). Throws coulomb::Error on a bad side.
+int faceLocalNodes(mesh::CellType cell, int side, std::array<int, 4>& localNodes);
+
+}  // namespace coulomb::fem

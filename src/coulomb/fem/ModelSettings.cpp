@@ -1,0 +1,202 @@
+#include "coulomb/fem/ModelSettings.hpp"
+
+#include <limits>
+
+#include <Teuchos_Array.hpp>
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "coulomb/core/Error.hpp"
+#include "coulomb/io/ParameterValidation.hpp"
+
+namespace coulomb::fem {
+
+using Teuchos::Array;
+using Teuchos::ParameterList;
+using Teuchos::RCP;
+using Teuchos::rcp;
+
+namespace {
+
+RCP<Teuchos::StringValidator> oneOf(std::initializer_list<std::string> names) {
+  return rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names.begin(), names.end())));
+}
+RCP<Teuchos::EnhancedNumberValidator<double>> range(double lo, double hi) {
+  return rcp(new Teuchos::EnhancedNumberValidator<double>(lo, hi));
+}
+constexpr double kTiny = std::numeric_limits<double>::min();
+constexpr double kHuge = std::numeric_limits<double>::max();
+
+const char* const kFunctionDoc =
+    "name of a sublist of 'Functions', or 'ramp' (f = t) or 'constant' (f = 1)";
+
+TimeFunction lookupFunction(const ParameterList& deck, const std::string& name, const std::string& where) {
+  if (name == "ramp") return TimeFunction::ramp();
+  if (name == "constant") return TimeFunction::constant();
+  const bool known = deck.isSublist("Functions") && deck.sublist("Functions").isSublist(name);
+  COULOMB_REQUIRE(known, "deck: '" << where << "/Function' names '" << name
+                                   << "', which is neither 'ramp', 'constant' nor a sublist of 'Functions'");
+  const ParameterList& f = deck.sublist("Functions").sublist(name);
+  const std::string path = "Functions/" + name;
+  const auto times = f.get<Array<double>>("Times");
+  const auto values = f.get<Array<double>>("Values");
+  return TimeFunction(times.toVector(), values.toVector(), path);
+}
+
+std::array<double, 3> vectorOfDimension(const Array<double>& a, int dimension, const std::string& where) {
+  COULOMB_REQUIRE(static_cast<int>(a.size()) == dimension,
+                  "deck: '" << where << "' needs " << dimension << " components (mesh dimension), got " << a.size());
+  std::array<double, 3> v{};
+  for (int i = 0; i < dimension; ++i) v[i] = a[i];
+  return v;
+}
+
+}  // namespace
+
+void addValidModelParameters(ParameterList& valid) {
+  ParameterList& materials = valid.sublist("Materials", false, "One sublist per material, named freely");
+  ParameterList& material = materials.sublist("*", false, "a material");
+  material.set("Model", "Linear Elastic", "small-strain linear elasticity, or compressible Neo-Hookean (total Lagrangian)",
+               oneOf({"Linear Elastic", "Neo-Hookean"}));
+  material.set("Young's Modulus", 1.0, std::string(io::kRequired) + "E [force/area], > 0", range(kTiny, kHuge));
+  material.set("Poisson's Ratio", 0.0, std::string(io::kRequired) + "nu, in (-1, 0.5)", range(-1.0, 0.5));
+
+  ParameterList& blocks = valid.sublist("Element Blocks", false, "One sublist per mesh element block, named as in the mesh");
+  ParameterList& block = blocks.sublist("*", false, "an element block");
+  block.set("Material", "", std::string(io::kRequired) + "name of a sublist of 'Materials'");
+  block.set("Thickness", 1.0, "out-of-plane thickness of 2D blocks [length]", range(kTiny, kHuge));
+
+  ParameterList& problem = valid.sublist("Problem", false, "Modelling assumptions");
+  problem.set("Plane Assumption", "Plane Strain", "2D meshes: plane strain or plane stress",
+              oneOf({"Plane Strain", "Plane Stress"}));
+
+  ParameterList& functions = valid.sublist("Functions", false, "Piecewise-linear functions of pseudo time, named freely");
+  ParameterList& function = functions.sublist("*", false, "a function");
+  function.set("Times", Array<double>(), std::string(io::kRequired) + "strictly increasing times");
+  function.set("Values", Array<double>(), std::string(io::kRequired) + "values at those times");
+
+  ParameterList& dirichlet = valid.sublist("Dirichlet Conditions", false, "Prescribed displacements, named freely");
+  ParameterList& d = dirichlet.sublist("*", false, "u_c = (Value + Linear Coefficients . X) f(t) on a node set");
+  d.set("Node Set", "", std::string(io::kRequired) + "node set name (or nodeset_<id>)");
+  d.set("Component", "all", "displaced component", oneOf({"x", "y", "z", "all"}));
+  d.set("Value", 0.0, "constant part of the prescribed displacement [length]");
+  d.set("Linear Coefficients", Array<double>(), "optional gradient: adds c . X (one entry per dimension)");
+  d.set("Function", "ramp", kFunctionDoc);
+
+  ParameterList& neumann = valid.sublist("Neumann Conditions", false, "Surface loads on side sets, named freely");
+  ParameterList& n = neumann.sublist("*", false, "a dead load on the reference surface");
+  n.set("Side Set", "", std::string(io::kRequired) + "side set name (or sideset_<id>)");
+  n.set("Type", "Pressure", "Pressure (> 0 pushes into the body) or Traction (vector)", oneOf({"Pressure", "Traction"}));
+  n.set("Value", 0.0, "pressure [force/area] (Type = Pressure)");
+  n.set("Traction", Array<double>(), "traction vector [force/area] (Type = Traction)");
+  n.set("Function", "ramp", kFunctionDoc);
+
+  ParameterList& bodyForces = valid.sublist("Body Forces", false, "Forces per reference volume, named freely");
+  ParameterList& b = bodyForces.sublist("*", false, "a body force");
+  b.set("Block", "", "element block name; empty = all blocks");
+  b.set("Force", Array<double>(), std::string(io::kRequired) + "force per volume, one entry per dimension");
+  b.set("Function", "ramp", kFunctionDoc);
+}
+
+ModelSettings parseModelSettings(const ParameterList& deck, int dimension) {
+  ParameterList valid;
+  addValidModelParameters(valid);
+  ModelSettings model;
+  const ParameterList empty;
+  const ParameterList& problem = deck.isSublist("Problem") ? deck.sublist("Problem") : empty;
+  const std::string plane = io::valueOrDefault<std::string>(problem, valid.sublist("Problem"), "Plane Assumption");
+
+  const ParameterList& materials = deck.isSublist("Materials") ? deck.sublist("Materials") : empty;
+  const ParameterList& validMaterial = valid.sublist("Materials").sublist("*");
+  const ParameterList& blocks = deck.isSublist("Element Blocks") ? deck.sublist("Element Blocks") : empty;
+  const ParameterList& validBlock = valid.sublist("Element Blocks").sublist("*");
+  for (auto it = blocks.begin(); it != blocks.end(); ++it) {
+    const std::string& blockName = blocks.name(it);
+    const ParameterList& block = blocks.sublist(blockName);
+    const std::string materialName = block.get<std::string>("Material");
+    COULOMB_REQUIRE(materials.isSublist(materialName), "deck: 'Element Blocks/" << blockName << "/Material' names '"
+                                                                                << materialName << "', which is not a sublist of 'Materials'");
+    const ParameterList& m = materials.sublist(materialName);
+    const std::string where = "Materials/" + materialName;
+    MaterialParameters p;
+    const std::string modelName = io::valueOrDefault<std::string>(m, validMaterial, "Model");
+    p.model = modelName == "Neo-Hookean" ? MaterialModel::NeoHookean : MaterialModel::LinearElastic;
+    p.youngsModulus = m.get<double>("Young's Modulus");
+    p.poissonRatio = m.get<double>("Poisson's Ratio");
+    COULOMB_REQUIRE(p.poissonRatio < 0.5 && p.poissonRatio > -1.0,
+                    "deck: '" << where << "/Poisson's Ratio' must be in (-1, 0.5) (open interval), got " << p.poissonRatio);
+    p.plane = plane == "Plane Stress" ? PlaneAssumption::PlaneStress : PlaneAssumption::PlaneStrain;
+    COULOMB_REQUIRE(!(dimension == 2 && p.plane == PlaneAssumption::PlaneStress && p.model == MaterialModel::NeoHookean),
+                    "deck: '" << where << "' is Neo-Hookean, which supports only 'Problem/Plane Assumption' = 'Plane Strain'");
+    p.thickness = io::valueOrDefault<double>(block, validBlock, "Thickness");
+    model.blockMaterials[blockName] = p;
+  }
+
+  const ParameterList& dirichlet = deck.isSublist("Dirichlet Conditions") ? deck.sublist("Dirichlet Conditions") : empty;
+  const ParameterList& validD = valid.sublist("Dirichlet Conditions").sublist("*");
+  for (auto it = dirichlet.begin(); it != dirichlet.end(); ++it) {
+    const std::string& name = dirichlet.name(it);
+    const ParameterList& d = dirichlet.sublist(name);
+    const std::string where = "Dirichlet Conditions/" + name;
+    DirichletCondition c;
+    c.name = name;
+    c.nodeSet = d.get<std::string>("Node Set");
+    const std::string component = io::valueOrDefault<std::string>(d, validD, "Component");
+    if (component == "all") {
+      for (int i = 0; i < dimension; ++i) c.components.push_back(i);
+    } else {
+      const int index = component == "x" ? 0 : component == "y" ? 1 : 2;
+      COULOMB_REQUIRE(index < dimension, "deck: '" << where << "/Component' is 'z' but the mesh is 2D");
+      c.components.push_back(index);
+    }
+    c.value = io::valueOrDefault<double>(d, validD, "Value");
+    if (d.isParameter("Linear Coefficients")) {
+      const auto coefficients = vectorOfDimension(d.get<Array<double>>("Linear Coefficients"), dimension,
+                                                  where + "/Linear Coefficients");
+      c.linearCoefficients.assign(coefficients.begin(), coefficients.begin() + dimension);
+    }
+    c.function = lookupFunction(deck, io::valueOrDefault<std::string>(d, validD, "Function"), where);
+    model.dirichlet.push_back(std::move(c));
+  }
+
+  const ParameterList& neumann = deck.isSublist("Neumann Conditions") ? deck.sublist("Neumann Conditions") : empty;
+  const ParameterList& validN = valid.sublist("Neumann Conditions").sublist("*");
+  for (auto it = neumann.begin(); it != neumann.end(); ++it) {
+    const std::string& name = neumann.name(it);
+    const ParameterList& n = neumann.sublist(name);
+    const std::string where = "Neumann Conditions/" + name;
+    NeumannCondition c;
+    c.name = name;
+    c.sideSet = n.get<std::string>("Side Set");
+    const bool isPressure = io::valueOrDefault<std::string>(n, validN, "Type") == "Pressure";
+    c.kind = isPressure ? NeumannCondition::Kind::Pressure : NeumannCondition::Kind::Traction;
+    if (isPressure) {
+      COULOMB_REQUIRE(!n.isParameter("Traction"), "deck: '" << where << "' is a Pressure but gives 'Traction'");
+      c.pressure = io::valueOrDefault<double>(n, validN, "Value");
+    } else {
+      COULOMB_REQUIRE(n.isParameter("Traction"), "deck: '" << where << "' has Type Traction but no 'Traction' vector");
+      COULOMB_REQUIRE(!n.isParameter("Value"), "deck: '" << where << "' is a Traction but gives a pressure 'Value'");
+      c.traction = vectorOfDimension(n.get<Array<double>>("Traction"), dimension, where + "/Traction");
+    }
+    c.function = lookupFunction(deck, io::valueOrDefault<std::string>(n, validN, "Function"), where);
+    model.neumann.push_back(std::move(c));
+  }
+
+  const ParameterList& bodyForces = deck.isSublist("Body Forces") ? deck.sublist("Body Forces") : empty;
+  const ParameterList& validB = valid.sublist("Body Forces").sublist("*");
+  for (auto it = bodyForces.begin(); it != bodyForces.end(); ++it) {
+    const std::string& name = bodyForces.name(it);
+    const ParameterList& b = bodyForces.sublist(name);
+    const std::string where = "Body Forces/" + name;
+    BodyForce f;
+    f.name = name;
+    const std::string block = io::valueOrDefault<std::string>(b, validB, "Block");
+    if (!block.empty()) f.block = block;
+    f.force = vectorOfDimension(b.get<Array<double>>("Force"), dimension, where + "/Force");
+    f.function = lookupFunction(deck, io::valueOrDefault<std::string>(b, validB, "Function"), where);
+    model.bodyForces.push_back(std::move(f));
+  }
+  return model;
+}
+
+}  // namespace coulomb::fem

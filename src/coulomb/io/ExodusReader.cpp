@@ -1,0 +1,266 @@
+/// @file ExodusReader.cpp
+/// @brief readExodus() on top of the exodusII 6.02 C API.
+///
+/// All integer data is requested as int64 (EX_ALL_INT64_API) so that files
+/// with 32-bit and with 64-bit maps (the shared benchmark meshes store int64
+/// connectivity and int32 side sets in one netCDF-4 file) read through one
+/// code path; the library converts. ex_opts(EX_DEFAULT) keeps the library from
+/// printing or aborting on errors: we turn each failed call into a
+/// coulomb::Error that names the file and carries the library's own message.
+#include "coulomb/io/ExodusReader.hpp"
+
+#include <exodusII.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <fstream>
+#include <vector>
+
+#include "coulomb/core/Error.hpp"
+
+namespace coulomb::io {
+namespace {
+
+/// The exodus library's last error message (empty when it has none).
+std::string lastExodusError() {
+  const char* message = nullptr;
+  const char* function = nullptr;
+  int code = 0;
+  ex_get_err(&message, &function, &code);
+  std::string text;
+  if (function && *function) text += std::string(function) + ": ";
+  if (message && *message) text += message;
+  return text;
+}
+
+/// Closes the file however readExodus() leaves.
+struct FileGuard {
+  int id = -1;
+  ~FileGuard() {
+    if (id >= 0) ex_close(id);
+  }
+};
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::string trimmed(const char* raw) {
+  std::string s(raw);
+  const auto end = s.find_last_not_of(" \t\r\n");
+  return end == std::string::npos ? std::string() : s.substr(0, end + 1);
+}
+
+class Reader {
+public:
+  explicit Reader(const std::string& path) : path_(path) {}
+
+  mesh::GlobalMesh read() {
+    {
+      std::ifstream probe(path_);
+      COULOMB_REQUIRE(probe.good(), "mesh '" << path_ << "': cannot open file (missing or not readable)");
+    }
+    ex_opts(EX_DEFAULT);  // no printing, no abort: we report errors ourselves
+    int cpuWordSize = sizeof(double);
+    int ioWordSize = 0;
+    float version = 0.0f;
+    file_.id = ex_open(path_.c_str(), EX_READ | EX_ALL_INT64_API, &cpuWordSize, &ioWordSize, &version);
+    COULOMB_REQUIRE(file_.id >= 0, "mesh '" << path_ << "': not a readable Exodus II file ("
+                                            << lastExodusError() << ")");
+    ex_set_int64_status(file_.id, EX_ALL_INT64_API);
+    // Names may be longer than the default 32 characters (netCDF-4 files).
+    const int64_t usedNameLength = ex_inquire_int(file_.id, EX_INQ_DB_MAX_USED_NAME_LENGTH);
+    if (usedNameLength > 32) ex_set_max_name_length(file_.id, static_cast<int>(usedNameLength));
+    nameBufferLength_ = static_cast<std::size_t>(std::max<int64_t>(usedNameLength, 256)) + 1;
+
+    ex_init_params init{};
+    check(ex_get_init_ext(file_.id, &init), "reading the file header");
+    COULOMB_REQUIRE(init.num_dim == 2 || init.num_dim == 3,
+                    "mesh '" << path_ << "': spatial dimension " << init.num_dim << " is not supported (need 2 or 3)");
+    mesh_.dimension = static_cast<int>(init.num_dim);
+    COULOMB_REQUIRE(init.num_nodes > 0, "mesh '" << path_ << "': has no nodes");
+    readCoordinates(init.num_nodes);
+    if (init.num_elem_blk > 0) readBlocks(init.num_elem_blk);
+    COULOMB_REQUIRE(mesh_.numElements() == init.num_elem,
+                    "mesh '" << path_ << "': blocks hold " << mesh_.numElements() << " elements but the header says "
+                             << init.num_elem);
+    if (init.num_node_sets > 0) readNodeSets(init.num_node_sets);
+    if (init.num_side_sets > 0) readSideSets(init.num_side_sets);
+    return std::move(mesh_);
+  }
+
+private:
+  void check(int status, const std::string& what) const {
+    COULOMB_REQUIRE(status >= 0, "mesh '" << path_ << "': " << what << " failed (" << lastExodusError() << ")");
+  }
+
+  std::vector<int64_t> ids(ex_entity_type type, int64_t count, const char* what) {
+    std::vector<int64_t> result(static_cast<std::size_t>(count));
+    check(ex_get_ids(file_.id, type, result.data()), std::string("reading the ") + what + " ids");
+    return result;
+  }
+
+  std::vector<std::string> names(ex_entity_type type, int64_t count) {
+    std::vector<std::vector<char>> buffers(static_cast<std::size_t>(count), std::vector<char>(nameBufferLength_, '\0'));
+    std::vector<char*> pointers;
+    for (auto& buffer : buffers) pointers.push_back(buffer.data());
+    std::vector<std::string> result(static_cast<std::size_t>(count));
+    // A file without names is fine (status > 0 is a warning): names stay "".
+    if (ex_get_names(file_.id, type, pointers.data()) < 0) return result;
+    for (std::size_t i = 0; i < buffers.size(); ++i) result[i] = trimmed(buffers[i].data());
+    return result;
+  }
+
+  void readCoordinates(int64_t numNodes) {
+    const auto n = static_cast<std::size_t>(numNodes);
+    std::vector<double> x(n), y(n), z(mesh_.dimension == 3 ? n : 0);
+    check(ex_get_coord(file_.id, x.data(), y.data(), mesh_.dimension == 3 ? z.data() : nullptr),
+          "reading the coordinates");
+    const int d = mesh_.dimension;
+    mesh_.coordinates.resize(n * static_cast<std::size_t>(d));
+    for (std::size_t i = 0; i < n; ++i) {
+      mesh_.coordinates[d * i] = x[i];
+      mesh_.coordinates[d * i + 1] = y[i];
+      if (d == 3) mesh_.coordinates[d * i + 2] = z[i];
+    }
+  }
+
+  void readBlocks(int64_t count) {
+    const auto blockIds = ids(EX_ELEM_BLOCK, count, "element block");
+    const auto blockNames = names(EX_ELEM_BLOCK, count);
+    const long long numNodes = mesh_.numNodes();
+    long long firstElement = 0;
+    for (std::size_t b = 0; b < blockIds.size(); ++b) {
+      ex_block param{};
+      param.id = blockIds[b];
+      param.type = EX_ELEM_BLOCK;
+      const std::string label = "element block '" + mesh::displayName(blockNames[b], "block", static_cast<int>(blockIds[b])) +
+                                "' (id " + std::to_string(blockIds[b]) + ")";
+      check(ex_get_block_param(file_.id, &param), "reading " + label);
+      mesh::ElementBlock block;
+      block.name = blockNames[b];
+      block.id = static_cast<int>(blockIds[b]);
+      block.firstElement = firstElement;
+      const std::string type = trimmed(param.topology);
+      COULOMB_REQUIRE(parseExodusElementType(type, static_cast<int>(param.num_nodes_per_entry), block.cellType),
+                      "mesh '" << path_ << "': " << label << " has element type " << type << " with "
+                               << param.num_nodes_per_entry << " nodes per element; supported: QUAD4, TRI3, HEX8, TET4");
+      COULOMB_REQUIRE(mesh::spatialDimension(block.cellType) == mesh_.dimension,
+                      "mesh '" << path_ << "': " << label << " has element type " << type << " (a "
+                               << mesh::spatialDimension(block.cellType) << "D cell) in a " << mesh_.dimension
+                               << "D file; supported: QUAD4, TRI3 in 2D files, HEX8, TET4 in 3D files");
+      block.connectivity.resize(static_cast<std::size_t>(param.num_entry * param.num_nodes_per_entry));
+      if (param.num_entry > 0) {
+        check(ex_get_conn(file_.id, EX_ELEM_BLOCK, param.id, block.connectivity.data(), nullptr, nullptr),
+              "reading the connectivity of " + label);
+      }
+      for (long long& node : block.connectivity) {
+        COULOMB_REQUIRE(node >= 1 && node <= numNodes, "mesh '" << path_ << "': " << label << " refers to node " << node
+                                                                << " but the file has " << numNodes << " nodes");
+        --node;
+      }
+      firstElement += param.num_entry;
+      mesh_.blocks.push_back(std::move(block));
+    }
+  }
+
+  void readNodeSets(int64_t count) {
+    const auto setIds = ids(EX_NODE_SET, count, "node set");
+    const auto setNames = names(EX_NODE_SET, count);
+    const long long numNodes = mesh_.numNodes();
+    for (std::size_t s = 0; s < setIds.size(); ++s) {
+      mesh::NodeSet set;
+      set.name = setNames[s];
+      set.id = static_cast<int>(setIds[s]);
+      const std::string label = "node set '" + mesh::displayName(set.name, "nodeset", set.id) + "' (id " +
+                                std::to_string(set.id) + ")";
+      int64_t numEntries = 0, numFactors = 0;
+      check(ex_get_set_param(file_.id, EX_NODE_SET, setIds[s], &numEntries, &numFactors), "reading " + label);
+      set.nodes.resize(static_cast<std::size_t>(numEntries));
+      if (numEntries > 0) {
+        check(ex_get_set(file_.id, EX_NODE_SET, setIds[s], set.nodes.data(), nullptr), "reading " + label);
+      }
+      for (long long& node : set.nodes) {
+        COULOMB_REQUIRE(node >= 1 && node <= numNodes, "mesh '" << path_ << "': " << label << " refers to node " << node
+                                                                << " but the file has " << numNodes << " nodes");
+        --node;
+      }
+      mesh_.nodeSets.push_back(std::move(set));
+    }
+  }
+
+  void readSideSets(int64_t count) {
+    const auto setIds = ids(EX_SIDE_SET, count, "side set");
+    const auto setNames = names(EX_SIDE_SET, count);
+    const long long numElements = mesh_.numElements();
+    for (std::size_t s = 0; s < setIds.size(); ++s) {
+      mesh::SideSet set;
+      set.name = setNames[s];
+      set.id = static_cast<int>(setIds[s]);
+      const std::string label = "side set '" + mesh::displayName(set.name, "sideset", set.id) + "' (id " +
+                                std::to_string(set.id) + ")";
+      int64_t numEntries = 0, numFactors = 0;
+      check(ex_get_set_param(file_.id, EX_SIDE_SET, setIds[s], &numEntries, &numFactors), "reading " + label);
+      std::vector<int64_t> sides(static_cast<std::size_t>(numEntries));
+      set.elements.resize(static_cast<std::size_t>(numEntries));
+      if (numEntries > 0) {
+        check(ex_get_set(file_.id, EX_SIDE_SET, setIds[s], set.elements.data(), sides.data()), "reading " + label);
+      }
+      set.sides.resize(sides.size());
+      for (std::size_t i = 0; i < sides.size(); ++i) {
+        const long long element = set.elements[i];
+        COULOMB_REQUIRE(element >= 1 && element <= numElements, "mesh '" << path_ << "': " << label << " refers to element "
+                                                                         << element << " but the file has " << numElements
+                                                                         << " elements");
+        set.elements[i] = element - 1;
+        const auto& block = blockOf(element - 1);
+        const int numFaces = mesh::numFaces(block.cellType);
+        COULOMB_REQUIRE(sides[i] >= 1 && sides[i] <= numFaces,
+                        "mesh '" << path_ << "': " << label << " gives side " << sides[i] << " of element " << element
+                                 << " (" << mesh::toString(block.cellType) << ", sides 1.." << numFaces << ")");
+        set.sides[i] = static_cast<int>(sides[i] - 1);
+      }
+      mesh_.sideSets.push_back(std::move(set));
+    }
+  }
+
+  const mesh::ElementBlock& blockOf(long long element) const {
+    // Blocks are few; a linear scan is cheaper than anything clever.
+    for (const auto& block : mesh_.blocks)
+      if (element >= block.firstElement && element < block.firstElement + block.numElements()) return block;
+    throw Error("mesh '" + path_ + "': element " + std::to_string(element + 1) + " is in no block");
+  }
+
+  std::string path_;
+  FileGuard file_;
+  std::size_t nameBufferLength_ = 257;
+  mesh::GlobalMesh mesh_;
+};
+
+}  // namespace
+
+bool parseExodusElementType(const std::string& type, int nodesPerElement, mesh::CellType& cellType) {
+  const std::string t = upper(type);
+  using mesh::CellType;
+  CellType parsed;
+  if (t == "QUAD" || t == "QUAD4")
+    parsed = CellType::Quad4;
+  else if (t == "TRI" || t == "TRI3" || t == "TRIANGLE")
+    parsed = CellType::Tri3;
+  else if (t == "HEX" || t == "HEX8" || t == "HEXAHEDRON")
+    parsed = CellType::Hex8;
+  else if (t == "TET" || t == "TET4" || t == "TETRA" || t == "TETRA4")
+    parsed = CellType::Tet4;
+  else
+    return false;
+  // "HEX" with 27 nodes is a HEX27, "TETRA" with 10 a TET10: not ours.
+  if (nodesPerElement != mesh::numNodes(parsed)) return false;
+  cellType = parsed;
+  return true;
+}
+
+mesh::GlobalMesh readExodus(const std::string& path) { return Reader(path).read(); }
+
+}  // namespace coulomb::io

@@ -1,0 +1,102 @@
+#include "coulomb/solver/Deck.hpp"
+
+#include <filesystem>
+#include <limits>
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "coulomb/core/Error.hpp"
+#include "coulomb/fem/ModelSettings.hpp"
+#include "coulomb/io/ParameterValidation.hpp"
+
+namespace coulomb::solver {
+
+using Teuchos::ParameterList;
+using Teuchos::rcp;
+
+namespace {
+
+template <typename T>
+Teuchos::RCP<Teuchos::EnhancedNumberValidator<T>> range(T lo, T hi) {
+  return rcp(new Teuchos::EnhancedNumberValidator<T>(lo, hi));
+}
+constexpr double kTiny = std::numeric_limits<double>::min();
+constexpr double kHuge = std::numeric_limits<double>::max();
+
+std::string resolve(const std::string& file, const std::string& deckPath) {
+  const std::filesystem::path p(file);
+  if (p.is_absolute()) return file;
+  return (std::filesystem::path(deckPath).parent_path() / p).lexically_normal().string();
+}
+
+}  // namespace
+
+Teuchos::RCP<const ParameterList> validDeckParameters() {
+  static Teuchos::RCP<const ParameterList> cached = [] {
+    auto valid = rcp(new ParameterList("Coulomb"));
+    ParameterList& mesh = valid->sublist("Mesh", false, std::string(io::kRequired) + "The Exodus II mesh");
+    mesh.set("File", "", std::string(io::kRequired) + "Exodus II mesh file, relative to the deck's folder");
+    fem::addValidModelParameters(*valid);
+
+    ParameterList& stepping = valid->sublist("Load Stepping", false, "Pseudo-time load stepping from t = 0");
+    stepping.set("Number of Steps", 1, "equal steps to reach the final time", range<int>(1, 1000000));
+    stepping.set("Final Time", 1.0, "pseudo time of the last step", range<double>(kTiny, kHuge));
+    stepping.set("Maximum Cutbacks", 5, "times a step may be halved and retried when Newton fails", range<int>(0, 50));
+
+    ParameterList& newton = valid->sublist("Newton", false, "Newton convergence");
+    const NewtonSettings defaults;
+    newton.set("Maximum Iterations", defaults.maximumIterations, "iterations before a step counts as failed",
+               range<int>(1, 1000));
+    newton.set("Relative Tolerance", defaults.relativeTolerance, "converged when ||f|| <= tol ||f_0||",
+               range<double>(0.0, 1.0));
+    newton.set("Absolute Tolerance", defaults.absoluteTolerance, "converged when ||f|| <= tol [force]",
+               range<double>(0.0, kHuge));
+
+    ParameterList& output = valid->sublist("Output", false, "Results");
+    output.set("File", "", "Exodus II result file, relative to the deck's folder (default: deck name with .e)");
+
+    valid->sublist("Nonlinear Solver", false,
+                   std::string(io::kPassthrough) + "NOX parameters, passed to NOX::Solver::buildSolver as given");
+    valid->sublist("Linear Solver", false,
+                   std::string(io::kPassthrough) + "Stratimikos parameters (Belos, MueLu, Ifpack2, Amesos2), as given");
+    return Teuchos::RCP<const ParameterList>(valid);
+  }();
+  return cached;
+}
+
+void printDeckHelp(std::ostream& out) {
+  out << "Coulomb input deck: a Teuchos XML ParameterList. Sublists named '*' stand for\n"
+         "sublists you name yourself (one per material, block, condition, function).\n"
+         "[required] marks required entries; [passthrough] lists go to Trilinos unchanged.\n\n";
+  validDeckParameters()->print(out, Teuchos::ParameterList::PrintOptions().showDoc(true).showTypes(true).indent(2));
+}
+
+Teuchos::RCP<ParameterList> readDeck(const std::string& path) {
+  auto deck = io::readXmlDeck(path);
+  io::validateParameters(*deck, *validDeckParameters());
+  return deck;
+}
+
+RunSettings parseRunSettings(const ParameterList& deck, const std::string& deckPath) {
+  const ParameterList& valid = *validDeckParameters();
+  const ParameterList empty;
+  auto sub = [&](const char* name) -> const ParameterList& { return deck.isSublist(name) ? deck.sublist(name) : empty; };
+  RunSettings run;
+  run.meshFile = resolve(deck.sublist("Mesh").get<std::string>("File"), deckPath);
+  const auto& stepping = valid.sublist("Load Stepping");
+  run.numberOfSteps = io::valueOrDefault<int>(sub("Load Stepping"), stepping, "Number of Steps");
+  run.finalTime = io::valueOrDefault<double>(sub("Load Stepping"), stepping, "Final Time");
+  run.maximumCutbacks = io::valueOrDefault<int>(sub("Load Stepping"), stepping, "Maximum Cutbacks");
+  const auto& newton = valid.sublist("Newton");
+  run.newton.maximumIterations = io::valueOrDefault<int>(sub("Newton"), newton, "Maximum Iterations");
+  run.newton.relativeTolerance = io::valueOrDefault<double>(sub("Newton"), newton, "Relative Tolerance");
+  run.newton.absoluteTolerance = io::valueOrDefault<double>(sub("Newton"), newton, "Absolute Tolerance");
+  std::string output = io::valueOrDefault<std::string>(sub("Output"), valid.sublist("Output"), "File");
+  if (output.empty()) output = std::filesystem::path(deckPath).filename().replace_extension(".e").string();
+  run.outputFile = resolve(output, deckPath);
+  run.nonlinearSolver = sub("Nonlinear Solver");
+  run.linearSolver = sub("Linear Solver");
+  return run;
+}
+
+}  // namespace coulomb::solver

@@ -1,0 +1,39 @@
+#pragma once
+/// @file LinearSolverFactory.hpp
+/// @brief Builds the Stratimikos linear solver from the deck's "Linear
+/// Solver" sublist (Belos, MueLu, Ifpack2, Amesos2 all registered), with
+/// Coulomb's defaults filled in where the user said nothing.
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+#include <Thyra_LinearOpWithSolveFactoryBase.hpp>
+
+#include "coulomb/core/TpetraTypes.hpp"
+
+namespace coulomb::solver {
+
+/// @brief The defaults: Belos Pseudo Block CG preconditioned by smoothed
+/// aggregation MueLu (Chebyshev smoother, coarse level solved by relaxation
+/// rather than KLU2, which is wrong on more than one rank in Debian's 13.2).
+Teuchos::RCP<Teuchos::ParameterList> defaultLinearSolverParameters(int dofsPerNode);
+
+/// @brief Stratimikos builder output plus the MueLu sublist where the
+/// near-null space and coordinates must be set again before each setup
+/// (MueLu's Thyra adapter removes them from the list once used).
+struct LinearSolver {
+  Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> factory;
+  Teuchos::RCP<Teuchos::ParameterList> parameters;  ///< the full, completed Stratimikos list
+  bool usesMueLu = false;
+  bool isDirect = false;
+};
+
+/// @brief Completes `user` with the defaults and builds the factory. Throws
+/// coulomb::Error (one line) if Stratimikos rejects the list, or if a direct
+/// solver is asked for on more than one rank.
+LinearSolver buildLinearSolver(const Teuchos::ParameterList& user, int dofsPerNode, int numRanks);
+
+/// @brief Puts rigid-body modes (3 in 2D, 6 in 3D) and nodal coordinates
+/// into the MueLu sublist of `solver`, as MueLu's "Nullspace"/"Coordinates".
+void setMueLuUserData(LinearSolver& solver, const Teuchos::RCP<MultiVector>& nullspace,
+                      const Teuchos::RCP<MultiVector>& coordinates);
+
+}  // namespace coulomb::solver

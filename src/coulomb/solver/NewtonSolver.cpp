@@ -1,0 +1,136 @@
+#include "coulomb/solver/NewtonSolver.hpp"
+
+#include <chrono>
+#include <iomanip>
+
+#include <NOX_Observer.hpp>
+#include <NOX_Solver_Factory.H>
+#include <NOX_Solver_Generic.H>
+#include <NOX_StatusTest_Combo.H>
+#include <NOX_StatusTest_FiniteValue.H>
+#include <NOX_StatusTest_MaxIters.H>
+#include <NOX_StatusTest_NormF.H>
+#include <NOX_Thyra.H>
+#include <NOX_Utils.H>
+#include <Thyra_TpetraThyraWrappers.hpp>
+#include <Tpetra_Vector.hpp>
+
+namespace coulomb::solver {
+
+namespace {
+
+/// NOX::Thyra::Group that tells how many Krylov iterations its last solve took.
+class CountingGroup : public NOX::Thyra::Group {
+public:
+  using NOX::Thyra::Group::Group;
+  CountingGroup(const CountingGroup& source, NOX::CopyType type) : NOX::Thyra::Group(source, type) {}
+  Teuchos::RCP<NOX::Abstract::Group> clone(NOX::CopyType type) const override {
+    return Teuchos::rcp(new CountingGroup(*this, type));
+  }
+  int lastLinearIterations() const { return last_linear_solve_num_iters_; }
+};
+
+/// Records one table row per iteration and prints it on rank 0.
+class IterationTable : public NOX::Observer {
+public:
+  IterationTable(NewtonReport& report, std::ostream* console) : report_(report), console_(console) {}
+
+  void runPreSolve(const NOX::Solver::Generic& solver) override {
+    start_ = Clock::now();
+    NewtonIteration row;
+    row.residualNorm = solver.getSolutionGroup().getNormF();
+    report_.iterations.push_back(row);
+    if (console_) {
+      *console_ << "    iter   |residual|    |increment|  lin.it  time[s]\n";
+      print(row);
+    }
+  }
+
+  void runPostIterate(const NOX::Solver::Generic& solver) override {
+    const auto now = Clock::now();
+    NewtonIteration row;
+    row.iteration = solver.getNumIterations();
+    const auto& group = solver.getSolutionGroup();
+    row.residualNorm = group.isF() ? group.getNormF() : -1.0;
+    auto difference = group.getX().clone(NOX::DeepCopy);
+    difference->update(-1.0, solver.getPreviousSolutionGroup().getX(), 1.0);
+    row.incrementNorm = difference->norm();
+    if (const auto* counting = dynamic_cast<const CountingGroup*>(&group)) row.linearIterations = counting->lastLinearIterations();
+    row.seconds = std::chrono::duration<double>(now - start_).count();
+    start_ = now;
+    report_.iterations.push_back(row);
+    if (console_) print(row);
+  }
+
+private:
+  using Clock = std::chrono::steady_clock;
+  void print(const NewtonIteration& row) const {
+    *console_ << "    " << std::setw(4) << row.iteration << std::scientific << std::setprecision(3) << "  "
+              << std::setw(11) << row.residualNorm << "  " << std::setw(11);
+    if (row.iteration == 0) *console_ << "-";
+    else *console_ << row.incrementNorm;
+    *console_ << "  " << std::setw(6) << row.linearIterations << "  " << std::fixed << std::setprecision(3)
+              << std::setw(7) << row.seconds << std::defaultfloat << "\n";
+  }
+  NewtonReport& report_;
+  std::ostream* console_;
+  Clock::time_point start_;
+};
+
+}  // namespace
+
+int NewtonReport::linearIterations() const {
+  int total = 0;
+  for (const auto& row : iterations) total += row.linearIterations;
+  return total;
+}
+
+Teuchos::RCP<Teuchos::ParameterList> NewtonSolver::defaultParameters() {
+  auto p = Teuchos::rcp(new Teuchos::ParameterList("Nonlinear Solver"));
+  p->set("Nonlinear Solver", "Line Search Based");
+  p->sublist("Line Search").set("Method", "Full Step");
+  p->sublist("Direction").set("Method", "Newton");
+  p->sublist("Printing").set("Output Information", static_cast<int>(NOX::Utils::Error));
+  return p;
+}
+
+NewtonSolver::NewtonSolver(Teuchos::RCP<ModelEvaluator> model, const Teuchos::ParameterList& noxParameters,
+                           const NewtonSettings& settings, std::ostream* console)
+    : model_(std::move(model)),
+      noxParameters_(Teuchos::rcp(new Teuchos::ParameterList(noxParameters))),
+      settings_(settings),
+      console_(console) {
+  noxParameters_->setParametersNotAlreadySet(*defaultParameters());
+}
+
+NewtonReport NewtonSolver::solve(Vector& u) {
+  using Extract = Thyra::TpetraOperatorVectorExtraction<Scalar, LocalOrdinal, GlobalOrdinal>;
+  auto space = model_->get_x_space();
+  auto thyraU = Thyra::createVector(Teuchos::rcpFromRef(u), space);
+  NOX::Thyra::Vector initialGuess(thyraU);
+  auto group = Teuchos::rcp(new CountingGroup(initialGuess, model_));
+  group->computeF();
+
+  using namespace NOX::StatusTest;
+  auto converged = Teuchos::rcp(new Combo(Combo::OR));
+  converged->addStatusTest(Teuchos::rcp(new NormF(settings_.absoluteTolerance, NormF::Unscaled)));
+  converged->addStatusTest(Teuchos::rcp(new NormF(*group, settings_.relativeTolerance, NormF::Unscaled)));
+  auto tests = Teuchos::rcp(new Combo(Combo::OR));
+  tests->addStatusTest(Teuchos::rcp(new FiniteValue));
+  tests->addStatusTest(converged);
+  tests->addStatusTest(Teuchos::rcp(new MaxIters(settings_.maximumIterations)));
+
+  NewtonReport report;
+  auto parameters = Teuchos::rcp(new Teuchos::ParameterList(*noxParameters_));
+  parameters->sublist("Solver Options").set<Teuchos::RCP<NOX::Observer>>(
+      "Observer", Teuchos::rcp(new IterationTable(report, console_)));
+  auto solver = NOX::Solver::buildSolver(group, tests, parameters);
+  const auto status = solver->solve();
+  report.converged = status == NOX::StatusTest::Converged;
+
+  const auto& solution = dynamic_cast<const NOX::Thyra::Vector&>(solver->getSolutionGroup().getX());
+  u.assign(*Extract::getConstTpetraVector(solution.getThyraRCPVector()));
+  return report;
+}
+
+}  // namespace coulomb::solver

@@ -1,0 +1,57 @@
+#pragma once
+/// @file NewtonSolver.hpp
+/// @brief One nonlinear solve (a load step) with NOX over the model
+/// evaluator, and the per-iteration console table.
+#include <ostream>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include "coulomb/core/TpetraTypes.hpp"
+#include "coulomb/solver/ModelEvaluator.hpp"
+
+namespace coulomb::solver {
+
+/// @brief Convergence settings (deck sublist "Newton").
+struct NewtonSettings {
+  int maximumIterations = 25;
+  double relativeTolerance = 1e-8;  ///< on ||f|| / ||f_0|| (f_0: residual at the step's start)
+  double absoluteTolerance = 1e-10; ///< on ||f||
+};
+
+/// @brief One row of the iteration table.
+struct NewtonIteration {
+  int iteration = 0;
+  double residualNorm = 0;
+  double incrementNorm = 0;
+  int linearIterations = 0;
+  double seconds = 0;
+};
+
+struct NewtonReport {
+  bool converged = false;
+  std::vector<NewtonIteration> iterations;  ///< row 0: the initial residual
+  int linearIterations() const;
+};
+
+class NewtonSolver {
+public:
+  /// `noxParameters`: the deck's "Nonlinear Solver" sublist (NOX names), completed with defaults.
+  NewtonSolver(Teuchos::RCP<ModelEvaluator> model, const Teuchos::ParameterList& noxParameters,
+               const NewtonSettings& settings, std::ostream* console);
+
+  /// Solves f(u) = 0 starting from `u`; on return `u` holds the last iterate.
+  NewtonReport solve(Vector& u);
+
+  /// NOX defaults Coulomb uses (full Newton step, NOX's own printing off).
+  static Teuchos::RCP<Teuchos::ParameterList> defaultParameters();
+
+private:
+  Teuchos::RCP<ModelEvaluator> model_;
+  Teuchos::RCP<Teuchos::ParameterList> noxParameters_;
+  NewtonSettings settings_;
+  std::ostream* console_;
+};
+
+}  // namespace coulomb::solver

@@ -1,0 +1,216 @@
+#include "coulomb/solver/Simulation.hpp"
+
+#include <chrono>
+#include <iomanip>
+#include <set>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "coulomb/core/Error.hpp"
+#include "coulomb/fem/Assembler.hpp"
+#include "coulomb/fem/DofMap.hpp"
+#include "coulomb/fem/ModelSettings.hpp"
+#include "coulomb/io/ExodusReader.hpp"
+#include "coulomb/mesh/Mesh.hpp"
+#include "coulomb/solver/LinearSolverFactory.hpp"
+#include "coulomb/solver/ModelEvaluator.hpp"
+#include "coulomb/solver/NewtonSolver.hpp"
+#include "coulomb/solver/ResultWriter.hpp"
+
+namespace coulomb::solver {
+
+namespace {
+
+const char* const kComponents[] = {"x", "y", "z"};
+
+std::vector<std::string> componentNames(const std::string& field, int dim) {
+  std::vector<std::string> names;
+  for (int c = 0; c < dim; ++c) names.push_back(field + "_" + kComponents[c]);
+  return names;
+}
+
+/// Rigid-body modes on the owned DoFs (MueLu's near-null space) and nodal coordinates.
+void rigidBodyModes(const mesh::Mesh& mesh, const fem::DofMap& dofs, Teuchos::RCP<MultiVector>& modes,
+                    Teuchos::RCP<MultiVector>& coordinates) {
+  const int dim = mesh.dimension();
+  modes = Teuchos::rcp(new MultiVector(dofs.ownedMap(), dim == 2 ? 3 : 6));
+  coordinates = Teuchos::rcp(new MultiVector(dofs.ownedNodeMap(), dim));
+  auto m = modes->get2dViewNonConst();
+  auto x = coordinates->get2dViewNonConst();
+  for (int i = 0; i < mesh.numOwnedNodes(); ++i) {
+    const double* X = &mesh.global().coordinates[mesh.localNodes()[i] * dim];
+    for (int d = 0; d < dim; ++d) {
+      x[d][i] = X[d];
+      m[d][i * dim + d] = 1.0;
+    }
+    if (dim == 2) {
+      m[2][i * 2 + 0] = -X[1];
+      m[2][i * 2 + 1] = X[0];
+    } else {
+      m[3][i * 3 + 1] = -X[2], m[3][i * 3 + 2] = X[1];
+      m[4][i * 3 + 0] = X[2], m[4][i * 3 + 2] = -X[0];
+      m[5][i * 3 + 0] = -X[1], m[5][i * 3 + 1] = X[0];
+    }
+  }
+}
+
+/// Owned-DoF vector viewed as an owned-node MultiVector with one column per component.
+Teuchos::RCP<MultiVector> byNode(const Vector& v, const fem::DofMap& dofs) {
+  const int dim = dofs.dofsPerNode();
+  auto out = Teuchos::rcp(new MultiVector(dofs.ownedNodeMap(), dim));
+  auto in = v.getData(0);
+  auto view = out->get2dViewNonConst();
+  const std::size_t n = dofs.ownedNodeMap()->getNodeNumElements();
+  for (std::size_t i = 0; i < n; ++i)
+    for (int c = 0; c < dim; ++c) view[c][i] = in[i * dim + c];
+  return out;
+}
+
+}  // namespace
+
+struct Simulation::Solvers {
+  LinearSolver linear;
+  Teuchos::RCP<MultiVector> nullspace, coordinates;
+  Teuchos::RCP<ModelEvaluator> model;
+  std::unique_ptr<NewtonSolver> newton;
+  std::unique_ptr<ResultWriter> writer;
+};
+
+Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
+                       std::ostream* console)
+    : comm_(comm), console_(comm->getRank() == 0 ? console : nullptr) {
+  // Every rank reads the deck and the mesh itself (no broadcast needed): the
+  // same files give the same errors everywhere, so all ranks fail together.
+  const auto deck = readDeck(deckPath);
+  settings_ = parseRunSettings(*deck, deckPath);
+  auto global = std::make_shared<mesh::GlobalMesh>(io::readExodus(settings_.meshFile));
+  const auto model = fem::parseModelSettings(*deck, global->dimension);
+  mesh_ = std::make_unique<mesh::Mesh>(global, comm_);
+  dofs_ = std::make_unique<fem::DofMap>(*mesh_);
+  assembler_ = std::make_unique<fem::Assembler>(*mesh_, *dofs_, model);
+
+  solvers_ = std::make_unique<Solvers>();
+  solvers_->linear = buildLinearSolver(settings_.linearSolver, dofs_->dofsPerNode(), comm_->getSize());
+  rigidBodyModes(*mesh_, *dofs_, solvers_->nullspace, solvers_->coordinates);
+  Solvers* s = solvers_.get();
+  solvers_->model = Teuchos::rcp(new ModelEvaluator(*assembler_, dofs_->ownedMap(), solvers_->linear.factory,
+                                                    [s] { setMueLuUserData(s->linear, s->nullspace, s->coordinates); }));
+  solvers_->newton = std::make_unique<NewtonSolver>(solvers_->model, settings_.nonlinearSolver, settings_.newton, console_);
+  displacement_ = Teuchos::rcp(new Vector(dofs_->ownedMap()));
+  reactions_ = Teuchos::rcp(new Vector(dofs_->ownedMap()));
+
+  std::set<std::string> seen;
+  for (const auto& d : model.dirichlet)
+    if (seen.insert(d.nodeSet).second) reactionSets_.push_back(d.nodeSet);
+}
+
+Simulation::~Simulation() = default;
+
+std::vector<double> Simulation::reactionTotal(const std::string& nodeSet) const {
+  const int dim = mesh_->dimension();
+  const auto& set = mesh_->global().nodeSets[mesh_->nodeSetIndex(nodeSet, "reaction total")];
+  std::vector<double> local(dim, 0.0), total(dim, 0.0);
+  auto r = reactions_->getData(0);
+  for (long long node : set.nodes) {
+    const int i = mesh_->localNode(node);
+    if (i < 0 || i >= mesh_->numOwnedNodes()) continue;
+    for (int c = 0; c < dim; ++c) local[c] += r[i * dim + c];
+  }
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_SUM, dim, local.data(), total.data());
+  return total;
+}
+
+void Simulation::writeStep(double time, const std::vector<double>& stepGlobals) {
+  const int dim = mesh_->dimension();
+  auto stress = Teuchos::rcp(new MultiVector(dofs_->ownedNodeMap(), 7));
+  assembler_->nodalStress(*displacement_, *stress);
+  std::vector<NodalField> fields;
+  fields.push_back({componentNames("displacement", dim), byNode(*displacement_, *dofs_)});
+  fields.push_back({componentNames("reaction", dim), byNode(*reactions_, *dofs_)});
+  fields.push_back({{"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_xz", "von_mises"}, stress});
+  std::vector<double> globals = stepGlobals;
+  for (const auto& set : reactionSets_)
+    for (double value : reactionTotal(set)) globals.push_back(value);
+  solvers_->writer->writeStep(time, fields, globals);
+}
+
+RunSummary Simulation::run() {
+  const auto start = std::chrono::steady_clock::now();
+  const int dim = mesh_->dimension();
+  std::vector<std::string> nodalNames = componentNames("displacement", dim);
+  for (const auto& n : componentNames("reaction", dim)) nodalNames.push_back(n);
+  for (const char* n : {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_xz", "von_mises"})
+    nodalNames.push_back(n);
+  std::vector<std::string> globalNames = {"newton_iterations", "linear_iterations", "cutbacks"};
+  for (const auto& set : reactionSets_)
+    for (const auto& n : componentNames("reaction_" + set, dim)) globalNames.push_back(n);
+  solvers_->writer = std::make_unique<ResultWriter>(settings_.outputFile, *mesh_, dofs_->ownedNodeMap(), nodalNames,
+                                                    globalNames);
+
+  RunSummary summary;
+  summary.dofs = static_cast<long long>(dofs_->ownedMap()->getGlobalNumElements());
+  if (console_)
+    *console_ << "coulomb: " << mesh_->global().numElements() << " elements, " << summary.dofs << " DoFs, "
+              << comm_->getSize() << " rank(s); result " << settings_.outputFile << "\n";
+  const double nominalStep = settings_.finalTime / settings_.numberOfSteps;
+  double time = 0.0, step = nominalStep;
+  int consecutiveCutbacks = 0;
+  const auto& constraints = assembler_->constraints();
+  Vector trial(dofs_->ownedMap());
+  while (time < settings_.finalTime * (1 - 1e-12)) {
+    const double next = std::min(time + step, settings_.finalTime);
+    if (console_)
+      *console_ << "step " << summary.steps + 1 << "  t = " << std::setprecision(6) << next << "  (dt = " << next - time
+                << ")\n";
+    const auto stepStart = std::chrono::steady_clock::now();
+    trial.assign(*displacement_);
+    constraints.setPrescribedValues(next, trial);
+    solvers_->model->setTime(next);
+    const NewtonReport report = solvers_->newton->solve(trial);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - stepStart).count();
+    const int iterations = static_cast<int>(report.iterations.size()) - 1;
+    if (!report.converged) {
+      ++summary.cutbacks;
+      ++consecutiveCutbacks;
+      COULOMB_REQUIRE(consecutiveCutbacks <= settings_.maximumCutbacks,
+                      "Newton did not converge at t = " << next << " after " << settings_.maximumCutbacks
+                                                        << " cutbacks ('Load Stepping/Maximum Cutbacks'); the result "
+                                                           "file keeps the converged steps as "
+                                                        << ResultWriter::partialPath(settings_.outputFile));
+      if (console_) *console_ << "  not converged after " << iterations << " iterations: cutting the step in half\n";
+      step /= 2;
+      continue;
+    }
+    consecutiveCutbacks = 0;
+    time = next;
+    displacement_->assign(trial);
+    assembler_->assemble(time, *displacement_, nullptr, nullptr, reactions_.get());
+    ++summary.steps;
+    summary.newtonIterations += iterations;
+    summary.linearIterations += report.linearIterations();
+    summary.stepTimes.push_back(time);
+    summary.stepNewtonIterations.push_back(iterations);
+    std::vector<double> norms;
+    for (const auto& row : report.iterations) norms.push_back(row.residualNorm);
+    summary.stepResidualNorms.push_back(norms);
+    writeStep(time, {double(iterations), double(report.linearIterations()), double(summary.cutbacks)});
+    if (console_)
+      *console_ << "  step " << summary.steps << " converged: t = " << time << ", " << iterations << " Newton / "
+                << report.linearIterations() << " linear iterations, |f| = " << std::scientific << std::setprecision(2)
+                << report.iterations.back().residualNorm << std::defaultfloat << ", " << std::fixed
+                << std::setprecision(2) << seconds << " s" << std::defaultfloat << "\n";
+    step = std::min(2 * step, nominalStep);  // recover the nominal step after a cutback
+  }
+  solvers_->writer->finish();
+  summary.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (console_)
+    *console_ << "coulomb: " << summary.steps << " steps, " << summary.newtonIterations << " Newton and "
+              << summary.linearIterations << " linear iterations, " << summary.cutbacks << " cutbacks, "
+              << std::fixed << std::setprecision(2) << summary.wallSeconds << " s" << std::defaultfloat << "\n";
+  return summary;
+}
+
+}  // namespace coulomb::solver

@@ -1,0 +1,73 @@
+#pragma once
+/// @file Simulation.hpp
+/// @brief One run of a deck: mesh, DoFs, assembly, linear and nonlinear
+/// solvers, load stepping with cutback, and result output.
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_RCP.hpp>
+
+#include "coulomb/core/TpetraTypes.hpp"
+#include "coulomb/solver/Deck.hpp"
+
+namespace coulomb::mesh {
+class Mesh;
+}
+namespace coulomb::fem {
+class DofMap;
+class Assembler;
+}
+
+namespace coulomb::solver {
+
+/// @brief What a finished run reports (the same on every rank).
+struct RunSummary {
+  int steps = 0;               ///< converged steps written
+  int cutbacks = 0;
+  int newtonIterations = 0;    ///< over converged steps
+  int linearIterations = 0;
+  double wallSeconds = 0;
+  long long dofs = 0;
+  std::vector<double> stepTimes;   ///< pseudo time of each converged step
+  std::vector<int> stepNewtonIterations;
+  std::vector<std::vector<double>> stepResidualNorms;  ///< Newton residual sequence per converged step
+};
+
+class Simulation {
+public:
+  /// Reads and validates the deck and the mesh, builds all components.
+  /// Collective; throws coulomb::Error on every rank on bad input.
+  Simulation(const std::string& deckPath, const Teuchos::RCP<const Teuchos::Comm<int>>& comm, std::ostream* console);
+  ~Simulation();
+
+  /// Runs all load steps and writes the result. Collective.
+  RunSummary run();
+
+  /// The converged displacement (owned map) after run().
+  const Vector& displacement() const { return *displacement_; }
+  const fem::DofMap& dofMap() const { return *dofs_; }
+  const mesh::Mesh& mesh() const { return *mesh_; }
+  const RunSettings& settings() const { return settings_; }
+  /// Total reaction force per component on the named node set at the last step.
+  std::vector<double> reactionTotal(const std::string& nodeSet) const;
+
+private:
+  struct Solvers;
+  void writeStep(double time, const std::vector<double>& stepGlobals);
+
+  Teuchos::RCP<const Teuchos::Comm<int>> comm_;
+  std::ostream* console_;
+  RunSettings settings_;
+  std::unique_ptr<mesh::Mesh> mesh_;
+  std::unique_ptr<fem::DofMap> dofs_;
+  std::unique_ptr<fem::Assembler> assembler_;
+  std::unique_ptr<Solvers> solvers_;
+  Teuchos::RCP<Vector> displacement_;
+  Teuchos::RCP<Vector> reactions_;
+  std::vector<std::string> reactionSets_;  ///< node sets whose reaction totals are written
+};
+
+}  // namespace coulomb::solver

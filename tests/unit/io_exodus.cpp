@@ -1,0 +1,297 @@
+// Tests of readExodus() and ExodusWriter: a write/read round trip of meshes
+// built in code (the result must equal the input exactly), the time steps
+// read back through the raw exodusII API (so the writer is not only checked
+// against our own reader), and the errors a user sees for missing files and
+// unsupported element blocks. No file outside the repository is needed.
+#include <gtest/gtest.h>
+
+#include <exodusII.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "coulomb/core/Error.hpp"
+#include "coulomb/io/ExodusReader.hpp"
+#include "coulomb/io/ExodusWriter.hpp"
+
+namespace {
+
+using coulomb::mesh::CellType;
+using coulomb::mesh::GlobalMesh;
+
+std::string outputPath(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::path(COULOMB_BINARY_DIR) / "test_output" / "io_exodus";
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
+}
+
+/// Two unit hexes side by side along x (12 nodes), one per block.
+GlobalMesh twoHexMesh() {
+  GlobalMesh m;
+  m.dimension = 3;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 3; ++i) m.coordinates.insert(m.coordinates.end(), {1.0 * i, 0.5 * j, 0.25 * k});
+  const auto n = [](int i, int j, int k) { return static_cast<long long>(i + 3 * (j + 2 * k)); };
+  for (int e = 0; e < 2; ++e) {
+    coulomb::mesh::ElementBlock b;
+    b.name = e == 0 ? "left_part" : "right_part";
+    b.id = 10 * (e + 1);
+    b.cellType = CellType::Hex8;
+    b.firstElement = e;
+    b.connectivity = {n(e, 0, 0), n(e + 1, 0, 0), n(e + 1, 1, 0), n(e, 1, 0),
+                      n(e, 0, 1), n(e + 1, 0, 1), n(e + 1, 1, 1), n(e, 1, 1)};
+    m.blocks.push_back(b);
+  }
+  m.nodeSets.push_back({"xmin", 1, {n(0, 0, 0), n(0, 1, 0), n(0, 0, 1), n(0, 1, 1)}});
+  m.nodeSets.push_back({"a_node_set_whose_name_is_longer_than_32_characters", 7, {n(2, 1, 1)}});
+  m.nodeSets.push_back({"", 8, {}});  // unnamed and empty: both must survive
+  m.sideSets.push_back({"xmin", 1, {0}, {3}});
+  m.sideSets.push_back({"top", 5, {0, 1}, {5, 5}});
+  return m;
+}
+
+/// A QUAD4 block and a TRI3 block sharing an edge (2D).
+GlobalMesh quadTriMesh() {
+  GlobalMesh m;
+  m.dimension = 2;
+  m.coordinates = {0, 0, 1, 0, 1, 1, 0, 1, 2, 0.5};
+  coulomb::mesh::ElementBlock quad{"quad", 1, CellType::Quad4, {0, 1, 2, 3}, 0};
+  coulomb::mesh::ElementBlock tri{"tri", 2, CellType::Tri3, {1, 4, 2}, 1};
+  m.blocks = {quad, tri};
+  m.nodeSets.push_back({"right", 3, {4}});
+  m.sideSets.push_back({"outside", 4, {0, 1, 1}, {0, 0, 1}});
+  return m;
+}
+
+void expectSameMesh(const GlobalMesh& a, const GlobalMesh& b) {
+  EXPECT_EQ(a.dimension, b.dimension);
+  EXPECT_EQ(a.coordinates, b.coordinates);
+  ASSERT_EQ(a.blocks.size(), b.blocks.size());
+  for (std::size_t i = 0; i < a.blocks.size(); ++i) {
+    SCOPED_TRACE("block " + std::to_string(i));
+    EXPECT_EQ(a.blocks[i].name, b.blocks[i].name);
+    EXPECT_EQ(a.blocks[i].id, b.blocks[i].id);
+    EXPECT_EQ(a.blocks[i].cellType, b.blocks[i].cellType);
+    EXPECT_EQ(a.blocks[i].connectivity, b.blocks[i].connectivity);
+    EXPECT_EQ(a.blocks[i].firstElement, b.blocks[i].firstElement);
+  }
+  ASSERT_EQ(a.nodeSets.size(), b.nodeSets.size());
+  for (std::size_t i = 0; i < a.nodeSets.size(); ++i) {
+    EXPECT_EQ(a.nodeSets[i].name, b.nodeSets[i].name);
+    EXPECT_EQ(a.nodeSets[i].id, b.nodeSets[i].id);
+    EXPECT_EQ(a.nodeSets[i].nodes, b.nodeSets[i].nodes);
+  }
+  ASSERT_EQ(a.sideSets.size(), b.sideSets.size());
+  for (std::size_t i = 0; i < a.sideSets.size(); ++i) {
+    EXPECT_EQ(a.sideSets[i].name, b.sideSets[i].name);
+    EXPECT_EQ(a.sideSets[i].id, b.sideSets[i].id);
+    EXPECT_EQ(a.sideSets[i].elements, b.sideSets[i].elements);
+    EXPECT_EQ(a.sideSets[i].sides, b.sideSets[i].sides);
+  }
+}
+
+/// Expects `f` to throw coulomb::Error whose message contains every string in `parts`.
+template <class F>
+void expectErrorContaining(F&& f, const std::vector<std::string>& parts) {
+  try {
+    f();
+    ADD_FAILURE() << "expected coulomb::Error";
+  } catch (const coulomb::Error& e) {
+    const std::string message = e.what();
+    for (const auto& part : parts) EXPECT_NE(message.find(part), std::string::npos) << "message: " << message;
+  }
+}
+
+/// Writes a one-block file through the raw exodusII API (what another
+/// Exodus writer would produce), to test what our reader refuses or accepts.
+void writeRawOneBlockFile(const std::string& path, int dimension, const char* type, int nodesPerElement,
+                          const char* blockName, int blockId, int extraMode = 0) {
+  int cpuWordSize = 8, ioWordSize = 8;
+  const int id = ex_create(path.c_str(), EX_CLOBBER | extraMode, &cpuWordSize, &ioWordSize);
+  ASSERT_GE(id, 0);
+  ASSERT_GE(ex_put_init(id, "raw", dimension, nodesPerElement, 1, 1, 0, 0), 0);
+  std::vector<double> x(nodesPerElement), y(nodesPerElement), z(nodesPerElement);
+  for (int i = 0; i < nodesPerElement; ++i) {
+    x[i] = i;
+    y[i] = i % 3;
+    z[i] = i % 5;
+  }
+  ASSERT_GE(ex_put_coord(id, x.data(), y.data(), dimension == 3 ? z.data() : nullptr), 0);
+  ASSERT_GE(ex_put_block(id, EX_ELEM_BLOCK, blockId, type, 1, nodesPerElement, 0, 0, 0), 0);
+  if (extraMode & EX_BULK_INT64_API) {
+    std::vector<int64_t> conn(nodesPerElement);
+    for (int i = 0; i < nodesPerElement; ++i) conn[i] = nodesPerElement - i;  // reversed: 1-based N..1
+    ASSERT_GE(ex_put_conn(id, EX_ELEM_BLOCK, blockId, conn.data(), nullptr, nullptr), 0);
+  } else {
+    std::vector<int> conn(nodesPerElement);
+    for (int i = 0; i < nodesPerElement; ++i) conn[i] = nodesPerElement - i;
+    ASSERT_GE(ex_put_conn(id, EX_ELEM_BLOCK, blockId, conn.data(), nullptr, nullptr), 0);
+  }
+  ASSERT_GE(ex_put_name(id, EX_ELEM_BLOCK, blockId, blockName), 0);
+  ASSERT_GE(ex_close(id), 0);
+}
+
+}  // namespace
+
+TEST(ExodusIo, RoundTrip3DWithVariables) {
+  const std::string path = outputPath("two_hex.e");
+  const GlobalMesh mesh = twoHexMesh();
+  const long long nn = mesh.numNodes();
+  std::vector<std::vector<double>> step1(2, std::vector<double>(nn)), step2 = step1;
+  for (long long i = 0; i < nn; ++i) {
+    step1[0][i] = 0.5 * i;
+    step1[1][i] = -1.0 * i;
+    step2[0][i] = 100.0 + i;
+    step2[1][i] = 1e-3 * i * i;
+  }
+  {
+    coulomb::io::ExodusWriter writer(path, mesh, {"displacement_x", "displacement_y"}, {"load_factor"}, "round trip");
+    EXPECT_EQ(writer.numStepsWritten(), 0);
+    writer.writeStep(0.25, step1, {0.5});
+    writer.writeStep(1.0, step2, {1.0});
+    EXPECT_EQ(writer.numStepsWritten(), 2);
+    writer.close();
+    writer.close();  // idempotent
+    expectErrorContaining([&] { writer.writeStep(2.0, step2, {2.0}); }, {path, "close"});
+  }
+
+  expectSameMesh(mesh, coulomb::io::readExodus(path));
+
+  // The results, through the exodusII API itself.
+  int cpuWordSize = 8, ioWordSize = 0;
+  float version = 0;
+  const int id = ex_open(path.c_str(), EX_READ, &cpuWordSize, &ioWordSize, &version);
+  ASSERT_GE(id, 0);
+  char title[MAX_LINE_LENGTH + 1] = {};
+  int unusedInt = 0;
+  float unusedFloat = 0;
+  ASSERT_GE(ex_inquire(id, EX_INQ_TITLE, &unusedInt, &unusedFloat, title), 0);
+  EXPECT_STREQ(title, "round trip");
+  EXPECT_EQ(ex_inquire_int(id, EX_INQ_TIME), 2);
+  int numNodal = 0, numGlobal = 0;
+  ASSERT_GE(ex_get_variable_param(id, EX_NODAL, &numNodal), 0);
+  ASSERT_GE(ex_get_variable_param(id, EX_GLOBAL, &numGlobal), 0);
+  ASSERT_EQ(numNodal, 2);
+  ASSERT_EQ(numGlobal, 1);
+  char name[MAX_STR_LENGTH + 1] = {};
+  ASSERT_GE(ex_get_variable_name(id, EX_NODAL, 2, name), 0);
+  EXPECT_STREQ(name, "displacement_y");
+  ASSERT_GE(ex_get_variable_name(id, EX_GLOBAL, 1, name), 0);
+  EXPECT_STREQ(name, "load_factor");
+  const std::vector<std::vector<double>>* steps[2] = {&step1, &step2};
+  const double times[2] = {0.25, 1.0}, globals[2] = {0.5, 1.0};
+  for (int s = 1; s <= 2; ++s) {
+    double t = -1;
+    ASSERT_GE(ex_get_time(id, s, &t), 0);
+    EXPECT_EQ(t, times[s - 1]);
+    for (int v = 1; v <= 2; ++v) {
+      std::vector<double> values(nn, -7.0);
+      ASSERT_GE(ex_get_var(id, s, EX_NODAL, v, 1, nn, values.data()), 0);
+      EXPECT_EQ(values, (*steps[s - 1])[v - 1]) << "step " << s << " variable " << v;
+    }
+    double g = -1;
+    ASSERT_GE(ex_get_glob_vars(id, s, 1, &g), 0);
+    EXPECT_EQ(g, globals[s - 1]);
+  }
+  ex_close(id);
+}
+
+TEST(ExodusIo, RoundTrip2DQuadAndTri) {
+  const std::string path = outputPath("quad_tri.e");
+  const GlobalMesh mesh = quadTriMesh();
+  { coulomb::io::ExodusWriter writer(path, mesh, {}, {}); }  // destructor closes
+  const GlobalMesh back = coulomb::io::readExodus(path);
+  expectSameMesh(mesh, back);
+  EXPECT_EQ(back.numNodes(), 5);
+  EXPECT_EQ(back.numElements(), 2);
+}
+
+TEST(ExodusIo, WriteStepChecksSizes) {
+  const std::string path = outputPath("sizes.e");
+  const GlobalMesh mesh = quadTriMesh();
+  coulomb::io::ExodusWriter writer(path, mesh, {"u_x", "u_y"}, {"energy"});
+  const std::vector<double> good(5, 1.0), bad(4, 1.0);
+  expectErrorContaining([&] { writer.writeStep(1.0, {good, bad}, {0.0}); }, {path, "u_y", "4 values"});
+  expectErrorContaining([&] { writer.writeStep(1.0, {good}, {0.0}); }, {path, "nodal"});
+  expectErrorContaining([&] { writer.writeStep(1.0, {good, good}, {}); }, {path, "global"});
+  EXPECT_EQ(writer.numStepsWritten(), 0);
+  writer.writeStep(1.0, {good, good}, {3.0});
+  EXPECT_EQ(writer.numStepsWritten(), 1);
+}
+
+TEST(ExodusIo, WriterRejectsInconsistentMesh) {
+  const std::string path = outputPath("inconsistent.e");
+  GlobalMesh mesh = twoHexMesh();
+  mesh.blocks[1].id = mesh.blocks[0].id;
+  expectErrorContaining([&] { coulomb::io::ExodusWriter(path, mesh, {}, {}); }, {path, "id 10"});
+  mesh = twoHexMesh();
+  mesh.sideSets[0].sides[0] = 6;
+  expectErrorContaining([&] { coulomb::io::ExodusWriter(path, mesh, {}, {}); }, {path, "xmin"});
+  mesh = twoHexMesh();
+  expectErrorContaining([&] { coulomb::io::ExodusWriter(path, mesh, {"u", "u"}, {}); }, {path, "'u'"});
+}
+
+TEST(ExodusIo, MissingFileNamesThePath) {
+  const std::string path = outputPath("does_not_exist.e");
+  std::filesystem::remove(path);
+  expectErrorContaining([&] { coulomb::io::readExodus(path); }, {path});
+}
+
+TEST(ExodusIo, NonExodusFileNamesThePath) {
+  const std::string path = outputPath("not_exodus.e");
+  { std::ofstream(path) << "this is not a netCDF file\n"; }
+  expectErrorContaining([&] { coulomb::io::readExodus(path); }, {path, "Exodus"});
+}
+
+TEST(ExodusIo, UnsupportedElementTypeNamesTheBlock) {
+  const std::string path = outputPath("hex20.e");
+  writeRawOneBlockFile(path, 3, "HEX20", 20, "foo", 3);
+  expectErrorContaining([&] { coulomb::io::readExodus(path); }, {path, "'foo'", "id 3", "HEX20", "HEX8"});
+}
+
+TEST(ExodusIo, BeamBlockIsRefused) {
+  const std::string path = outputPath("beam.e");
+  writeRawOneBlockFile(path, 3, "BEAM2", 2, "rods", 4);
+  expectErrorContaining([&] { coulomb::io::readExodus(path); }, {path, "'rods'", "id 4", "BEAM2"});
+}
+
+TEST(ExodusIo, TwoDimensionalCellInThreeDimensionalFileIsRefused) {
+  const std::string path = outputPath("tri_in_3d.e");
+  writeRawOneBlockFile(path, 3, "TRI3", 3, "skin", 2);
+  expectErrorContaining([&] { coulomb::io::readExodus(path); }, {path, "'skin'", "TRI3", "3D"});
+}
+
+TEST(ExodusIo, ReadsInt64ConnectivityAndWriterSpellings) {
+  // 64-bit integer storage (as in netCDF-4 files of other writers), type
+  // spelled "hex" in lower case: accepted; numbers become 0-based.
+  const std::string path = outputPath("int64_hex.e");
+  writeRawOneBlockFile(path, 3, "hex", 8, "cube", 9, EX_NETCDF4 | EX_NOCLASSIC | EX_ALL_INT64_DB | EX_ALL_INT64_API);
+  const GlobalMesh mesh = coulomb::io::readExodus(path);
+  ASSERT_EQ(mesh.blocks.size(), 1u);
+  EXPECT_EQ(mesh.blocks[0].cellType, CellType::Hex8);
+  EXPECT_EQ(mesh.blocks[0].name, "cube");
+  EXPECT_EQ(mesh.blocks[0].id, 9);
+  EXPECT_EQ(mesh.blocks[0].connectivity, (std::vector<long long>{7, 6, 5, 4, 3, 2, 1, 0}));
+  EXPECT_EQ(mesh.numNodes(), 8);
+  EXPECT_EQ(mesh.coordinates[3 * 7 + 2], 2.0);  // z of node 8 = 7 % 5
+}
+
+TEST(ExodusIo, ElementTypeNames) {
+  CellType t = CellType::Hex8;
+  EXPECT_TRUE(coulomb::io::parseExodusElementType("quad", 4, t));
+  EXPECT_EQ(t, CellType::Quad4);
+  EXPECT_TRUE(coulomb::io::parseExodusElementType("TRI3", 3, t));
+  EXPECT_EQ(t, CellType::Tri3);
+  EXPECT_TRUE(coulomb::io::parseExodusElementType("TETRA", 4, t));
+  EXPECT_EQ(t, CellType::Tet4);
+  EXPECT_TRUE(coulomb::io::parseExodusElementType("Hex8", 8, t));
+  EXPECT_EQ(t, CellType::Hex8);
+  EXPECT_FALSE(coulomb::io::parseExodusElementType("HEX", 27, t));
+  EXPECT_FALSE(coulomb::io::parseExodusElementType("TETRA", 10, t));
+  EXPECT_FALSE(coulomb::io::parseExodusElementType("SHELL4", 4, t));
+  EXPECT_FALSE(coulomb::io::parseExodusElementType("WEDGE", 6, t));
+}

@@ -1,0 +1,359 @@
+// Tests of the gmsh -> Exodus conversion (readGmsh + ExodusWriter, the code
+// behind coulomb_gmsh2exo). A hand-written .msh checks node renumbering,
+// cell flipping and side matching exactly without needing gmsh; the .geo
+// files of exodus_meshes/ are then meshed with gmsh (skipped, visibly, when
+// gmsh is not installed) and checked geometrically: every named set holds
+// exactly the nodes on its face, side sets' nodes (through the exodus
+// library's own side numbering) equal the node set of the same name, side
+// normals point outwards, and all cells have positive measure summing to
+// the domain's area/volume.
+#include <gtest/gtest.h>
+
+#include <exodusII.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "coulomb/core/Error.hpp"
+#include "coulomb/io/ExodusReader.hpp"
+#include "coulomb/io/ExodusWriter.hpp"
+#include "coulomb/io/GmshReader.hpp"
+
+namespace {
+
+using coulomb::mesh::CellType;
+using coulomb::mesh::GlobalMesh;
+using Vec = std::array<double, 3>;
+
+std::string outputPath(const std::string& name) {
+  const std::filesystem::path dir = std::filesystem::path(COULOMB_BINARY_DIR) / "test_output" / "io_gmsh";
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
+}
+
+std::string writeText(const std::string& name, const std::string& text) {
+  const std::string path = outputPath(name);
+  std::ofstream(path) << text;
+  return path;
+}
+
+template <class F>
+void expectErrorContaining(F&& f, const std::vector<std::string>& parts) {
+  try {
+    f();
+    ADD_FAILURE() << "expected coulomb::Error";
+  } catch (const coulomb::Error& e) {
+    const std::string message = e.what();
+    for (const auto& part : parts) EXPECT_NE(message.find(part), std::string::npos) << "message: " << message;
+  }
+}
+
+// Two unit squares; the right one is listed clockwise, node 99 is an unused
+// geometry point, a point element without physical group must be ignored.
+const char* kTwoSquares = R"($MeshFormat
+2.2 0 8
+$EndMeshFormat
+$PhysicalNames
+4
+0 7 "corner"
+1 2 "bottom"
+1 3 "right"
+2 1 "body"
+$EndPhysicalNames
+$Nodes
+7
+1 0 0 0
+2 1 0 0
+3 1 1 0
+4 0 1 0
+5 2 0 0
+6 2 1 0
+99 5 5 0
+$EndNodes
+$Elements
+7
+1 15 2 7 1 1
+2 15 2 0 5 99
+3 1 2 2 1 1 2
+4 1 2 2 1 2 5
+5 1 2 3 2 5 6
+6 3 2 1 1 1 2 3 4
+7 3 2 1 1 2 3 6 5
+$EndElements
+)";
+
+Vec point(const GlobalMesh& m, long long node) {
+  Vec p{0, 0, 0};
+  for (int c = 0; c < m.dimension; ++c) p[c] = m.coordinates[m.dimension * node + c];
+  return p;
+}
+Vec sub(const Vec& a, const Vec& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Vec cross(const Vec& a, const Vec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+double tetVolume(const Vec& a, const Vec& b, const Vec& c, const Vec& d) {
+  return dot(sub(b, a), cross(sub(c, a), sub(d, a))) / 6.0;
+}
+
+/// Signed measure of cell e of block b; a hex is cut into six tetrahedra
+/// around its 1-7 diagonal, each of which must be positive on its own.
+double cellMeasure(const GlobalMesh& m, const coulomb::mesh::ElementBlock& b, long long e, bool* allPositive) {
+  const int nn = coulomb::mesh::numNodes(b.cellType);
+  std::vector<Vec> x;
+  for (int i = 0; i < nn; ++i) x.push_back(point(m, b.connectivity[e * nn + i]));
+  std::vector<double> parts;
+  switch (b.cellType) {
+    case CellType::Tri3: parts = {0.5 * cross(sub(x[1], x[0]), sub(x[2], x[0]))[2]}; break;
+    case CellType::Quad4:
+      parts = {0.5 * cross(sub(x[1], x[0]), sub(x[2], x[0]))[2], 0.5 * cross(sub(x[2], x[0]), sub(x[3], x[0]))[2]};
+      break;
+    case CellType::Tet4: parts = {tetVolume(x[0], x[1], x[2], x[3])}; break;
+    case CellType::Hex8: {
+      const int t[6][4] = {{0, 1, 2, 6}, {0, 2, 3, 6}, {0, 3, 7, 6}, {0, 7, 4, 6}, {0, 4, 5, 6}, {0, 5, 1, 6}};
+      for (const auto& k : t) parts.push_back(tetVolume(x[k[0]], x[k[1]], x[k[2]], x[k[3]]));
+      break;
+    }
+  }
+  double sum = 0;
+  for (double p : parts) {
+    sum += p;
+    if (!(p > 0)) *allPositive = false;
+  }
+  return sum;
+}
+
+const coulomb::mesh::ElementBlock& blockOf(const GlobalMesh& m, long long element) {
+  for (const auto& b : m.blocks)
+    if (element >= b.firstElement && element < b.firstElement + b.numElements()) return b;
+  throw std::logic_error("element in no block");
+}
+
+}  // namespace
+
+TEST(GmshIo, HandWrittenTwoSquares) {
+  const std::string path = writeText("two_squares.msh", kTwoSquares);
+  const GlobalMesh m = coulomb::io::readGmsh(path);
+  EXPECT_EQ(m.dimension, 2);
+  // node 99 dropped; the others keep gmsh tag order
+  EXPECT_EQ(m.coordinates, (std::vector<double>{0, 0, 1, 0, 1, 1, 0, 1, 2, 0, 2, 1}));
+  ASSERT_EQ(m.blocks.size(), 1u);
+  EXPECT_EQ(m.blocks[0].name, "body");
+  EXPECT_EQ(m.blocks[0].id, 1);
+  EXPECT_EQ(m.blocks[0].cellType, CellType::Quad4);
+  // second square flipped to counter-clockwise: gmsh 2 3 6 5 -> 2 5 6 3
+  EXPECT_EQ(m.blocks[0].connectivity, (std::vector<long long>{0, 1, 2, 3, 1, 4, 5, 2}));
+  ASSERT_EQ(m.sideSets.size(), 2u);
+  EXPECT_EQ(m.sideSets[0].name, "bottom");
+  EXPECT_EQ(m.sideSets[0].id, 2);
+  EXPECT_EQ(m.sideSets[0].elements, (std::vector<long long>{0, 1}));
+  EXPECT_EQ(m.sideSets[0].sides, (std::vector<int>{0, 0}));
+  EXPECT_EQ(m.sideSets[1].name, "right");
+  EXPECT_EQ(m.sideSets[1].elements, (std::vector<long long>{1}));
+  EXPECT_EQ(m.sideSets[1].sides, (std::vector<int>{1}));
+  ASSERT_EQ(m.nodeSets.size(), 3u);
+  EXPECT_EQ(m.nodeSets[0].name, "bottom");
+  EXPECT_EQ(m.nodeSets[0].nodes, (std::vector<long long>{0, 1, 4}));
+  EXPECT_EQ(m.nodeSets[1].name, "right");
+  EXPECT_EQ(m.nodeSets[1].nodes, (std::vector<long long>{4, 5}));
+  EXPECT_EQ(m.nodeSets[2].name, "corner");
+  EXPECT_EQ(m.nodeSets[2].id, 7);
+  EXPECT_EQ(m.nodeSets[2].nodes, (std::vector<long long>{0}));
+}
+
+TEST(GmshIo, Errors) {
+  expectErrorContaining([] { coulomb::io::readGmsh(outputPath("missing.msh")); }, {outputPath("missing.msh")});
+
+  const std::string v4 = writeText("v4.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");
+  expectErrorContaining([&] { coulomb::io::readGmsh(v4); }, {v4, "4.1", "msh22"});
+
+  std::string text = kTwoSquares;  // the diagonal 1-3 as a "boundary" line
+  text.replace(text.find("5 1 2 3 2 5 6"), 13, "5 1 2 3 2 1 3");
+  const std::string diagonal = writeText("diagonal.msh", text);
+  expectErrorContaining([&] { coulomb::io::readGmsh(diagonal); }, {diagonal, "'right'", "not a side"});
+
+  text = kTwoSquares;  // the second square as two triangles: mixed types in "body"
+  text.replace(text.find("7\n1 15"), 6, "8\n1 15");
+  text.replace(text.find("7 3 2 1 1 2 3 6 5"), 17, "7 2 2 1 1 2 5 6\n8 2 2 1 1 2 6 3");
+  const std::string mixed = writeText("mixed.msh", text);
+  expectErrorContaining([&] { coulomb::io::readGmsh(mixed); }, {mixed, "'body'", "triangle"});
+
+  text = kTwoSquares;  // a second-order triangle in "body"
+  text.replace(text.find("7 3 2 1 1 2 3 6 5"), 17, "7 9 2 1 1 2 5 6 1 2 3");
+  const std::string quadratic = writeText("quadratic.msh", text);
+  expectErrorContaining([&] { coulomb::io::readGmsh(quadratic); }, {quadratic, "6-node triangle"});
+}
+
+TEST(GmshIo, ConverterToolReportsErrorsOnOneLine) {
+  const std::string tool = std::string(COULOMB_BINARY_DIR) + "/coulomb_gmsh2exo";
+  if (!std::filesystem::exists(tool)) GTEST_SKIP() << "coulomb_gmsh2exo not built yet at " << tool;
+  const std::string in = writeText("tool_in.msh", kTwoSquares), out = outputPath("tool_out.e");
+  const std::string log = outputPath("tool_stderr.txt");
+  ASSERT_EQ(std::system((tool + " " + in + " " + out + " > /dev/null 2> " + log).c_str()), 0);
+  const GlobalMesh m = coulomb::io::readExodus(out);
+  EXPECT_EQ(m.numNodes(), 6);
+  EXPECT_EQ(m.numElements(), 2);
+  const std::string missing = outputPath("no_such_input.msh");
+  const int status = std::system((tool + " " + missing + " " + out + " > /dev/null 2> " + log).c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << "status " << status;
+  std::ifstream err(log);
+  std::string line, extra;
+  ASSERT_TRUE(std::getline(err, line));
+  EXPECT_NE(line.find(missing), std::string::npos) << line;
+  EXPECT_FALSE(std::getline(err, extra)) << "more than one line on stderr: " << extra;
+}
+
+namespace {
+
+struct GeoCase {
+  std::string geo;
+  int dim;
+  int n;
+  CellType type;
+  long long nodes, elements;  // -1: not checked (unstructured)
+  double measure, measureTolerance;
+  /// name -> predicate "node lies on this boundary part"
+  std::map<std::string, std::function<bool(const Vec&)>> sets;
+};
+
+bool near(double a, double b) { return std::abs(a - b) < 1e-9; }
+
+void checkGeo(const GeoCase& c) {
+  if (std::system("gmsh --version > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "gmsh is not installed: skipping the .geo -> .msh -> Exodus round trip of " << c.geo;
+  const std::string stem = std::filesystem::path(c.geo).stem().string();
+  const std::string msh = outputPath(stem + ".msh"), exo = outputPath(stem + ".e");
+  std::filesystem::remove(msh);
+  const std::string command = "gmsh -" + std::to_string(c.dim) + " -format msh22 -v 1 -setnumber n " +
+                              std::to_string(c.n) + " -o " + msh + " " + std::string(COULOMB_SOURCE_DIR) +
+                              "/exodus_meshes/" + c.geo + " > " + outputPath(stem + ".gmsh.log") + " 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  {
+    coulomb::io::ExodusWriter writer(exo, coulomb::io::readGmsh(msh), {}, {});
+  }
+  const GlobalMesh m = coulomb::io::readExodus(exo);
+
+  EXPECT_EQ(m.dimension, c.dim);
+  if (c.nodes >= 0) {
+    EXPECT_EQ(m.numNodes(), c.nodes);
+  }
+  if (c.elements >= 0) {
+    EXPECT_EQ(m.numElements(), c.elements);
+  }
+  ASSERT_EQ(m.blocks.size(), 1u);
+  EXPECT_EQ(m.blocks[0].name, "body");
+  EXPECT_EQ(m.blocks[0].cellType, c.type);
+
+  bool allPositive = true;
+  double measure = 0;
+  for (long long e = 0; e < m.blocks[0].numElements(); ++e) measure += cellMeasure(m, m.blocks[0], e, &allPositive);
+  EXPECT_TRUE(allPositive) << "a cell (or sub-tetrahedron of a hex) has non-positive measure";
+  EXPECT_NEAR(measure, c.measure, c.measureTolerance);
+
+  // Side set nodes through the exodus library's own side numbering.
+  int cpuWordSize = 8, ioWordSize = 0;
+  float version = 0;
+  const int exoId = ex_open(exo.c_str(), EX_READ, &cpuWordSize, &ioWordSize, &version);
+  ASSERT_GE(exoId, 0);
+
+  ASSERT_EQ(m.sideSets.size(), c.sets.size());
+  ASSERT_EQ(m.nodeSets.size(), c.sets.size());
+  for (std::size_t s = 0; s < m.sideSets.size(); ++s) {
+    const auto& side = m.sideSets[s];
+    const auto& nodes = m.nodeSets[s];
+    SCOPED_TRACE(c.geo + " set '" + side.name + "'");
+    ASSERT_EQ(side.name, nodes.name);
+    ASSERT_TRUE(c.sets.count(side.name));
+    const auto& onPart = c.sets.at(side.name);
+
+    std::set<long long> expected;
+    for (long long i = 0; i < m.numNodes(); ++i)
+      if (onPart(point(m, i))) expected.insert(i);
+    EXPECT_EQ(std::set<long long>(nodes.nodes.begin(), nodes.nodes.end()), expected);
+    EXPECT_EQ(nodes.nodes.size(), expected.size()) << "duplicates in the node set";
+
+    std::set<long long> ours;
+    for (std::size_t k = 0; k < side.elements.size(); ++k) {
+      const auto& b = blockOf(m, side.elements[k]);
+      const int nn = coulomb::mesh::numNodes(b.cellType);
+      const long long local = side.elements[k] - b.firstElement;
+      std::vector<Vec> f;
+      for (int l : coulomb::io::exodusSideNodes(b.cellType, side.sides[k])) {
+        const long long node = b.connectivity[local * nn + l];
+        ours.insert(node);
+        f.push_back(point(m, node));
+      }
+      Vec cellCentre{0, 0, 0}, faceCentre{0, 0, 0};
+      for (int i = 0; i < nn; ++i)
+        for (int d = 0; d < 3; ++d) cellCentre[d] += point(m, b.connectivity[local * nn + i])[d] / nn;
+      for (const auto& p : f)
+        for (int d = 0; d < 3; ++d) faceCentre[d] += p[d] / f.size();
+      const Vec normal = c.dim == 2 ? Vec{f[1][1] - f[0][1], f[0][0] - f[1][0], 0}
+                                    : cross(sub(f[1], f[0]), sub(f[2], f[0]));
+      EXPECT_GT(dot(normal, sub(faceCentre, cellCentre)), 0) << "side normal points inwards";
+    }
+    EXPECT_EQ(ours, expected);
+
+    int64_t count = 0, factors = 0;
+    ASSERT_GE(ex_get_set_param(exoId, EX_SIDE_SET, side.id, &count, &factors), 0);
+    std::vector<int> perSide(count), sideNodes(count * 4);
+    ASSERT_GE(ex_get_side_set_node_list(exoId, side.id, perSide.data(), sideNodes.data()), 0);
+    std::set<long long> library;
+    std::size_t offset = 0;
+    for (int k = 0; k < count; ++k) {
+      EXPECT_EQ(perSide[k], c.dim == 2 ? 2 : (c.type == CellType::Hex8 ? 4 : 3));
+      for (int i = 0; i < perSide[k]; ++i) library.insert(sideNodes[offset + i] - 1);
+      offset += perSide[k];
+    }
+    EXPECT_EQ(library, expected);
+  }
+  ex_close(exoId);
+}
+
+std::map<std::string, std::function<bool(const Vec&)>> rectangleSets(double width, double height) {
+  return {{"bottom", [](const Vec& p) { return near(p[1], 0); }},
+          {"top", [=](const Vec& p) { return near(p[1], height); }},
+          {"left", [](const Vec& p) { return near(p[0], 0); }},
+          {"right", [=](const Vec& p) { return near(p[0], width); }}};
+}
+
+std::map<std::string, std::function<bool(const Vec&)>> cubeSets() {
+  return {{"bottom", [](const Vec& p) { return near(p[2], 0); }}, {"top", [](const Vec& p) { return near(p[2], 1); }},
+          {"left", [](const Vec& p) { return near(p[0], 0); }},   {"right", [](const Vec& p) { return near(p[0], 1); }},
+          {"front", [](const Vec& p) { return near(p[1], 0); }},  {"back", [](const Vec& p) { return near(p[1], 1); }}};
+}
+
+}  // namespace
+
+TEST(GmshIo, Block2dQuad) {
+  checkGeo({"block2d.geo", 2, 3, CellType::Quad4, 7 * 4, 6 * 3, 2.0, 1e-12, rectangleSets(2, 1)});
+}
+
+TEST(GmshIo, Block2dTri) {
+  checkGeo({"block2d_tri.geo", 2, 3, CellType::Tri3, 7 * 4, 2 * 6 * 3, 2.0, 1e-12, rectangleSets(2, 1)});
+}
+
+TEST(GmshIo, Block3dHex) {
+  checkGeo({"block3d.geo", 3, 3, CellType::Hex8, 4 * 4 * 4, 27, 1.0, 1e-12, cubeSets()});
+}
+
+TEST(GmshIo, Block3dTet) { checkGeo({"block3d_tet.geo", 3, 3, CellType::Tet4, -1, -1, 1.0, 1e-12, cubeSets()}); }
+
+TEST(GmshIo, QuarterAnnulus) {
+  // Exact area 3*pi/4; the polygonal mesh with 2n = 8 segments per quarter
+  // circle (chord error) is a few percent smaller.
+  const auto radius = [](const Vec& p) { return std::hypot(p[0], p[1]); };
+  checkGeo({"quarter_annulus2d.geo", 2, 4, CellType::Quad4, 5 * 9, 4 * 8, 3.0 * M_PI / 4.0, 0.05,
+            {{"inner", [=](const Vec& p) { return std::abs(radius(p) - 1) < 1e-9; }},
+             {"outer", [=](const Vec& p) { return std::abs(radius(p) - 2) < 1e-9; }},
+             {"symmetry_x", [](const Vec& p) { return near(p[0], 0); }},
+             {"symmetry_y", [](const Vec& p) { return near(p[1], 0); }}}});
+}
