@@ -127,7 +127,6 @@ TYPED_TEST(FemNeoHookeanKernel, SmallStrainsMatchLinearElasticityToSecondOrder) 
     typename C::Vec diff;
     for (int i = 0; i < C::dofs; ++i) diff[i] = rNH[i] - rLE[i];
     EXPECT_LT(maxAbs(diff), 2.0 * strain[k] * maxAbs(rLE));
-    std::printf("%g %g %g\n", strain[k], error[k], maxAbs(diff)/maxAbs(rLE));
   }
   EXPECT_LT(error[0], 2.0 * kE * strain[0] * strain[0]);  // O(strain^2) with a modest constant
   EXPECT_GT(error[0] / error[1], 50.0);                    // ... and really second order

@@ -210,6 +210,24 @@ TEST(ExodusIo, RoundTrip2DQuadAndTri) {
   EXPECT_EQ(back.numElements(), 2);
 }
 
+TEST(ExodusIo, FileWithoutStepsIsAPlainMesh) {
+  // Variables are declared with the first step (ParaView crashes on declared
+  // variables without steps); a run that stops before it leaves a mesh.
+  const std::string path = outputPath("no_steps.e");
+  const GlobalMesh mesh = quadTriMesh();
+  { coulomb::io::ExodusWriter writer(path, mesh, {"u_x", "u_y"}, {"energy"}); }
+  expectSameMesh(mesh, coulomb::io::readExodus(path));
+  int cpuWordSize = 8, ioWordSize = 0;
+  float version = 0;
+  const int id = ex_open(path.c_str(), EX_READ, &cpuWordSize, &ioWordSize, &version);
+  ASSERT_GE(id, 0);
+  EXPECT_EQ(ex_inquire_int(id, EX_INQ_TIME), 0);
+  int numNodal = -1;
+  ex_get_variable_param(id, EX_NODAL, &numNodal);
+  EXPECT_EQ(numNodal, 0);
+  ex_close(id);
+}
+
 TEST(ExodusIo, WriteStepChecksSizes) {
   const std::string path = outputPath("sizes.e");
   const GlobalMesh mesh = quadTriMesh();

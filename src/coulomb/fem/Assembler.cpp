@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Export.hpp>
 #include <Tpetra_Import.hpp>
@@ -246,6 +247,8 @@ Teuchos::RCP<CrsMatrix> Assembler::createMatrix() const {
 AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residual, CrsMatrix* jacobian,
                                    Vector* reactions) {
   Impl& m = *impl_;
+  static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: bulk assembly");
+  Teuchos::TimeMonitor scope(*timer);
   m.overlapU->doImport(u, *m.ownedToOverlap, Tpetra::INSERT);
   m.overlapResidual->putScalar(0.0);
   CrsMatrix* K = nullptr;

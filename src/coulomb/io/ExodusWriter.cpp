@@ -143,7 +143,6 @@ ExodusWriter::ExodusWriter(const std::string& path, const mesh::GlobalMesh& mesh
   COULOMB_REQUIRE(fileId_ >= 0, "exodus output '" << path_ << "': cannot create the file (" << lastExodusError() << ")");
   try {
     writeMesh(mesh, title);
-    declareVariables();
     check(ex_update(fileId_), "flushing the mesh");
   } catch (...) {
     ex_close(fileId_);
@@ -165,6 +164,7 @@ ExodusWriter::ExodusWriter(ExodusWriter&& other) noexcept
       fileId_(std::exchange(other.fileId_, -1)),
       numNodes_(other.numNodes_),
       numSteps_(other.numSteps_),
+      variablesDeclared_(other.variablesDeclared_),
       nodalNames_(std::move(other.nodalNames_)),
       globalNames_(std::move(other.globalNames_)) {}
 
@@ -178,6 +178,7 @@ ExodusWriter& ExodusWriter::operator=(ExodusWriter&& other) noexcept {
     fileId_ = std::exchange(other.fileId_, -1);
     numNodes_ = other.numNodes_;
     numSteps_ = other.numSteps_;
+    variablesDeclared_ = other.variablesDeclared_;
     nodalNames_ = std::move(other.nodalNames_);
     globalNames_ = std::move(other.globalNames_);
   }
@@ -274,6 +275,7 @@ void ExodusWriter::declareVariables() {
   };
   declare(EX_NODAL, nodalNames_, "nodal");
   declare(EX_GLOBAL, globalNames_, "global");
+  variablesDeclared_ = true;
 }
 
 void ExodusWriter::writeStep(double time, const std::vector<std::vector<double>>& nodalValues,
@@ -291,6 +293,11 @@ void ExodusWriter::writeStep(double time, const std::vector<std::vector<double>>
                                                                               << globalValues.size()
                                                                               << " global values, declared "
                                                                               << globalNames_.size());
+  // Variables are declared with the first step, not in the constructor:
+  // ParaView 5.11's Exodus reader crashes (SIGSEGV) on a file that declares
+  // variables but holds no time step, which is what a run that fails before
+  // its first step would leave behind. Without steps the file is a plain mesh.
+  if (!variablesDeclared_) declareVariables();
   const int step = numSteps_ + 1;
   check(ex_put_time(fileId_, step, &time), "writing the time of step " + std::to_string(step));
   for (std::size_t v = 0; v < nodalValues.size(); ++v)

@@ -23,9 +23,12 @@ class ExodusWriter {
 public:
   /// Creates @p path (overwriting it), writes the title, coordinates, element
   /// blocks (with names), node sets and side sets (with names; Exodus
-  /// numbering is 1-based in the file) and declares the nodal and global
-  /// variables. Name vector fields "<name>_x", "<name>_y"[, "<name>_z"] so
-  /// that ParaView shows them as one vector.
+  /// numbering is 1-based in the file) and checks the nodal and global
+  /// variable names; the variables are declared in the file with the first
+  /// writeStep() (ParaView 5.11 crashes on files that declare variables but
+  /// hold no step). Name vector fields "<name>_x", "<name>_y"[, "<name>_z"]:
+  /// ParaView then shows one 3-component array ("<name>_" in its classic
+  /// Exodus reader, "<name>" in the IOSS reader).
   /// @throws coulomb::Error naming @p path if the file cannot be written or the
   /// mesh is inconsistent (duplicate ids, node numbers out of range, ...).
   ExodusWriter(const std::string& path, const mesh::GlobalMesh& mesh, std::vector<std::string> nodalVariableNames,
@@ -64,6 +67,7 @@ private:
   int fileId_ = -1;
   long long numNodes_ = 0;
   int numSteps_ = 0;
+  bool variablesDeclared_ = false;
   std::vector<std::string> nodalNames_;
   std::vector<std::string> globalNames_;
 };

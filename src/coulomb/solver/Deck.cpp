@@ -54,6 +54,7 @@ Teuchos::RCP<const ParameterList> validDeckParameters() {
 
     ParameterList& output = valid->sublist("Output", false, "Results");
     output.set("File", "", "Exodus II result file, relative to the deck's folder (default: deck name with .e)");
+    output.set("Print Timers", false, "print Teuchos timers (assembly, MueLu setup, Belos solve...) at the end");
 
     valid->sublist("Nonlinear Solver", false,
                    std::string(io::kPassthrough) + "NOX parameters, passed to NOX::Solver::buildSolver as given");
@@ -94,6 +95,7 @@ RunSettings parseRunSettings(const ParameterList& deck, const std::string& deckP
   std::string output = io::valueOrDefault<std::string>(sub("Output"), valid.sublist("Output"), "File");
   if (output.empty()) output = std::filesystem::path(deckPath).filename().replace_extension(".e").string();
   run.outputFile = resolve(output, deckPath);
+  run.printTimers = io::valueOrDefault<bool>(sub("Output"), valid.sublist("Output"), "Print Timers");
   run.nonlinearSolver = sub("Nonlinear Solver");
   run.linearSolver = sub("Linear Solver");
   return run;

@@ -21,6 +21,7 @@ struct RunSettings {
   int maximumCutbacks = 5;
   NewtonSettings newton;
   std::string outputFile;    ///< resolved relative to the deck's folder
+  bool printTimers = false;
   Teuchos::ParameterList nonlinearSolver;  ///< "Nonlinear Solver" (NOX), untouched
   Teuchos::ParameterList linearSolver;     ///< "Linear Solver" (Stratimikos), untouched
 };

@@ -5,6 +5,7 @@
 #include <set>
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
@@ -206,6 +207,7 @@ RunSummary Simulation::run() {
   }
   solvers_->writer->finish();
   summary.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (settings_.printTimers) Teuchos::TimeMonitor::summarize(comm_.ptr(), console_ ? *console_ : std::cout);
   if (console_)
     *console_ << "coulomb: " << summary.steps << " steps, " << summary.newtonIterations << " Newton and "
               << summary.linearIterations << " linear iterations, " << summary.cutbacks << " cutbacks, "
