@@ -1,12 +1,15 @@
-// GoogleTest main for the serial unit tests: MPI is initialised (one rank)
-// because some modules build Teuchos communicators.
+// GoogleTest main: MPI and Kokkos are initialised (and finalised after every
+// Tpetra object is gone) by Tpetra's ScopeGuard; gtest output only on rank 0.
 #include <gtest/gtest.h>
-#include <mpi.h>
+
+#include <Tpetra_Core.hpp>
 
 int main(int argc, char** argv) {
-  MPI_Init(&argc, &argv);
+  Tpetra::ScopeGuard tpetra(&argc, &argv);
   ::testing::InitGoogleTest(&argc, argv);
-  const int result = RUN_ALL_TESTS();
-  MPI_Finalize();
-  return result;
+  if (Tpetra::getDefaultComm()->getRank() != 0) {
+    auto& listeners = ::testing::UnitTest::GetInstance()->listeners();
+    delete listeners.Release(listeners.default_result_printer());
+  }
+  return RUN_ALL_TESTS();
 }

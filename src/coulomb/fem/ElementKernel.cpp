@@ -71,7 +71,7 @@ KernelStatus linearElastic(const MaterialParameters& material, const std::array<
     if (!tangent) continue;
     auto& K = *tangent;
     for (int a = 0; a < n; ++a)
-      for (int bb = 0; bb < n; ++bb) {
+      for (int bb = a; bb < n; ++bb) {  // upper block triangle; mirrored below
         const double* Ga = &G[a * d];
         const double* Gb = &G[bb * d];
         double dot = 0.0;
@@ -82,6 +82,13 @@ KernelStatus linearElastic(const MaterialParameters& material, const std::array<
             row[k] += wdV * (lam * Ga[i] * Gb[k] + mu * Ga[k] * Gb[i] + (i == k ? mu * dot : 0.0));
         }
       }
+  }
+  if (tangent) {  // K is symmetric: block (b, a) = block (a, b)^T
+    auto& K = *tangent;
+    for (int a = 0; a < n; ++a)
+      for (int bb = a + 1; bb < n; ++bb)
+        for (int i = 0; i < d; ++i)
+          for (int k = 0; k < d; ++k) K[(bb * d + k) * nd + a * d + i] = K[(a * d + i) * nd + bb * d + k];
   }
   return KernelStatus::Ok;
 }

@@ -70,7 +70,8 @@ public:
     COULOMB_REQUIRE(file_.id >= 0, "mesh '" << path_ << "': not a readable Exodus II file ("
                                             << lastExodusError() << ")");
     ex_set_int64_status(file_.id, EX_ALL_INT64_API);
-    // Names may be longer than the default 32 characters (netCDF-4 files).
+    // Names may be longer than the default 32 characters (ExodusWriter sizes
+    // the name dimension to the longest name).
     const int64_t usedNameLength = ex_inquire_int(file_.id, EX_INQ_DB_MAX_USED_NAME_LENGTH);
     if (usedNameLength > 32) ex_set_max_name_length(file_.id, static_cast<int>(usedNameLength));
     nameBufferLength_ = static_cast<std::size_t>(std::max<int64_t>(usedNameLength, 256)) + 1;

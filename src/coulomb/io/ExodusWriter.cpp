@@ -30,8 +30,9 @@ std::string lastExodusError() {
   return text;
 }
 
-/// Exodus names are limited by the library's maximum name length; netCDF-4
-/// files allow up to 255 characters. Longer names would be cut silently.
+/// Exodus names are limited by the library's maximum name length (the file's
+/// name dimension is sized to the longest name, see writeMesh); longer names
+/// than this are refused rather than cut silently.
 constexpr std::size_t kMaxNameLength = 255;
 
 void checkIdsUnique(const std::string& path, const char* kind, const std::vector<int>& ids) {
@@ -134,11 +135,12 @@ ExodusWriter::ExodusWriter(const std::string& path, const mesh::GlobalMesh& mesh
   ex_opts(EX_DEFAULT);  // no printing, no abort: errors become coulomb::Error
   int cpuWordSize = sizeof(double);
   int ioWordSize = sizeof(double);
-  // Integers are passed as int64 but stored as 32-bit: with EX_BULK_INT64_DB
-  // the Debian exodusII 6.02 stores node and side set lists as netCDF
-  // "ushort" and fails on numbers above 65535 (checked by hand). 32-bit
-  // storage is exact up to 2^31 - 1 nodes/elements (validateMesh checks).
-  const int mode = EX_CLOBBER | EX_NETCDF4 | EX_NOCLASSIC | EX_ALL_INT64_API;
+  // netCDF-3 64-bit offset, integers passed as int64 but stored as 32-bit
+  // (see the header): with EX_BULK_INT64_DB the Debian exodusII 6.02 stores
+  // node and side set lists as netCDF "ushort" and fails on numbers above
+  // 65535 (checked by hand); netCDF-4 files are locked against readers while
+  // open for writing. 32-bit storage is exact up to 2^31 - 1 (validateMesh).
+  const int mode = EX_CLOBBER | EX_LARGE_MODEL | EX_ALL_INT64_API;
   fileId_ = ex_create(path_.c_str(), mode, &cpuWordSize, &ioWordSize);
   COULOMB_REQUIRE(fileId_ >= 0, "exodus output '" << path_ << "': cannot create the file (" << lastExodusError() << ")");
   try {

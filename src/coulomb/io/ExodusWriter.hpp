@@ -7,11 +7,14 @@
 /// user gave us. Only rank 0 constructs a writer: the caller gathers the
 /// distributed results into global node order first.
 ///
-/// Files are netCDF-4 (HDF5; no 2 GiB variable limits) with 32-bit integer
-/// storage, exact up to 2^31 - 1 nodes and elements: the Debian exodusII 6.02
-/// corrupts set lists when 64-bit integer storage (EX_BULK_INT64_DB) is
-/// requested. The exodusII headers stay out of this header: the open file is
-/// only an int handle.
+/// Files are netCDF-3 "64-bit offset" (Exodus' classic large-model format:
+/// files beyond 2 GiB, up to 4 GiB per variable, i.e. ~500M nodes) with
+/// 32-bit integers, exact up to 2^31 - 1 nodes and elements. Why not
+/// netCDF-4/HDF5 with 64-bit integers: the Debian exodusII 6.02 corrupts
+/// node/side set lists with EX_BULK_INT64_DB (stored as ushort), and HDF5's
+/// file lock keeps ParaView and other readers out of a file while the run
+/// still writes it; a 64-bit-offset file can be read after every step.
+/// The exodusII headers stay out of this header: the open file is an int.
 #include <string>
 #include <vector>
 

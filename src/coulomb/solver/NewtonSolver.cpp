@@ -47,6 +47,7 @@ public:
   }
 
   void runPostIterate(const NOX::Solver::Generic& solver) override {
+    if (solver.getNumIterations() == 0) return;  // NOX reports a failed first status check here too
     const auto now = Clock::now();
     NewtonIteration row;
     row.iteration = solver.getNumIterations();

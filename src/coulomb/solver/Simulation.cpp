@@ -158,7 +158,7 @@ RunSummary Simulation::run() {
               << comm_->getSize() << " rank(s); result " << settings_.outputFile << "\n";
   const double nominalStep = settings_.finalTime / settings_.numberOfSteps;
   double time = 0.0, step = nominalStep;
-  int consecutiveCutbacks = 0;
+  int consecutiveCutbacks = 0, successesSinceCutback = 0;
   const auto& constraints = assembler_->constraints();
   Vector trial(dofs_->ownedMap());
   while (time < settings_.finalTime * (1 - 1e-12)) {
@@ -183,6 +183,7 @@ RunSummary Simulation::run() {
                                                         << ResultWriter::partialPath(settings_.outputFile));
       if (console_) *console_ << "  not converged after " << iterations << " iterations: cutting the step in half\n";
       step /= 2;
+      successesSinceCutback = 0;
       continue;
     }
     consecutiveCutbacks = 0;
@@ -203,7 +204,12 @@ RunSummary Simulation::run() {
                 << report.linearIterations() << " linear iterations, |f| = " << std::scientific << std::setprecision(2)
                 << report.iterations.back().residualNorm << std::defaultfloat << ", " << std::fixed
                 << std::setprecision(2) << seconds << " s" << std::defaultfloat << "\n";
-    step = std::min(2 * step, nominalStep);  // recover the nominal step after a cutback
+    // Recover the nominal step after a cutback, but only once two steps in a
+    // row went through at the reduced size (else it fails again at once).
+    if (++successesSinceCutback >= 2) {
+      step = std::min(2 * step, nominalStep);
+      successesSinceCutback = 0;
+    }
   }
   solvers_->writer->finish();
   summary.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -51,6 +51,8 @@ public:
   const fem::DofMap& dofMap() const { return *dofs_; }
   const mesh::Mesh& mesh() const { return *mesh_; }
   const RunSettings& settings() const { return settings_; }
+  /// The bulk assembler (tests check its Jacobian against finite differences).
+  fem::Assembler& assembler() { return *assembler_; }
   /// Total reaction force per component on the named node set at the last step.
   std::vector<double> reactionTotal(const std::string& nodeSet) const;
 

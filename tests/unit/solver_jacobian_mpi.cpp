@@ -1,0 +1,119 @@
+// The assembled tangent against central finite differences of the assembled
+// residual (global, through Tpetra and the overlap export), Neo-Hookean at a
+// finite deformation on a distorted TET4 and a HEX8 mesh; and the linear
+// solver's true residual (what Stratimikos reports converged must be so).
+#include <gtest/gtest.h>
+
+#include <Stratimikos_DefaultLinearSolverBuilder.hpp>
+#include <Thyra_LinearOpWithSolveFactoryHelpers.hpp>
+#include <Thyra_TpetraThyraWrappers.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "TestSupport.hpp"
+#include "coulomb/core/Error.hpp"
+#include "coulomb/fem/Assembler.hpp"
+#include "coulomb/fem/DofMap.hpp"
+#include "coulomb/solver/LinearSolverFactory.hpp"
+
+namespace coulomb::test {
+namespace {
+
+/// A Neo-Hookean cube, bottom fixed, top pulled and twisted: a finite,
+/// inhomogeneous deformation.
+std::string twistedCubeDeck(const std::string& name, const std::string& mesh) {
+  const std::string dir = scratchDirectory(name);
+  const std::string body =
+      "<ParameterList name=\"Dirichlet Conditions\">" + dirichletXml("fix", "bottom", "all", 0.0) +
+      dirichletXml("twist x", "top", "x", 0.1, {0.0, -0.3, 0.0}) + dirichletXml("twist y", "top", "y", -0.05, {0.3, 0.0, 0.0}) +
+      dirichletXml("pull", "top", "z", 0.2) +
+      "</ParameterList><ParameterList name=\"Load Stepping\"><Parameter name=\"Number of Steps\" type=\"int\" value=\"2\"/></ParameterList>";
+  const std::string material =
+      "<Parameter name=\"Model\" type=\"string\" value=\"Neo-Hookean\"/>"
+      "<Parameter name=\"Young's Modulus\" type=\"double\" value=\"1000\"/>"
+      "<Parameter name=\"Poisson's Ratio\" type=\"double\" value=\"0.35\"/>";
+  const std::string meshFile = dir + "/distorted.e";
+  writeDistortedCopy(shippedMesh(mesh), meshFile, 0.2);
+  const std::string deck = dir + "/twist.xml";
+  writeOnRoot(deck, deckXml(meshFile, material, body));
+  return deck;
+}
+
+class AssembledJacobian : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(AssembledJacobian, MatchesCentralFiniteDifferences) {
+  const std::string mesh = GetParam();
+  solver::Simulation simulation(twistedCubeDeck("jacobian_" + mesh.substr(0, mesh.find('.')), mesh), worldComm(), nullptr);
+  simulation.run();
+  auto& assembler = simulation.assembler();
+  const auto map = simulation.dofMap().ownedMap();
+  const double time = 1.0;
+  Vector u(map), direction(map), fPlus(map), fMinus(map), jv(map);
+  u.assign(simulation.displacement());
+  // A smooth direction, zero on prescribed DoFs (their columns are eliminated).
+  direction.randomize();
+  {
+    auto d = direction.getDataNonConst(0);
+    for (int dof : assembler.constraints().ownedConstrainedDofs()) d[dof] = 0.0;
+  }
+  direction.scale(1e-2 / direction.normInf());
+  auto jacobian = assembler.createMatrix();
+  assembler.assemble(time, u, nullptr, jacobian.get());
+  jacobian->apply(direction, jv);
+
+  const double h = 1e-4;
+  Vector shifted(map);
+  shifted.update(1.0, u, h, direction, 0.0);
+  assembler.assemble(time, shifted, &fPlus, nullptr);
+  shifted.update(1.0, u, -h, direction, 0.0);
+  assembler.assemble(time, shifted, &fMinus, nullptr);
+  Vector fd(map);
+  fd.update(0.5 / h, fPlus, -0.5 / h, fMinus, 0.0);
+  Vector difference(map);
+  difference.update(1.0, jv, -1.0, fd, 0.0);
+  const double relative = difference.norm2() / jv.norm2();
+  EXPECT_LT(relative, 1e-6) << "|J v - FD| / |J v| on " << mesh;
+  EXPECT_GT(jv.norm2(), 0.0);
+}
+
+INSTANTIATE_TEST_SUITE_P(NeoHookean, AssembledJacobian, ::testing::Values("block3d.e", "block3d_tet.e"),
+                         [](const auto& info) {
+                           std::string n = info.param;
+                           return n.substr(0, n.find('.'));
+                         });
+
+TEST(LinearSolve, TrueResidualOfDefaultSolverIsSmall) {
+  solver::Simulation simulation(twistedCubeDeck("linear_solve", "block3d.e"), worldComm(), nullptr);
+  auto& assembler = simulation.assembler();
+  const auto& dofs = simulation.dofMap();
+  Vector u(dofs.ownedMap()), b(dofs.ownedMap()), x(dofs.ownedMap()), r(dofs.ownedMap());
+  auto jacobian = assembler.createMatrix();
+  assembler.constraints().setPrescribedValues(0.5, u);
+  assembler.assemble(0.5, u, &b, jacobian.get());
+  b.scale(-1.0);
+
+  auto solver = solver::buildLinearSolver(Teuchos::ParameterList(), dofs.dofsPerNode(), worldComm()->getSize());
+  auto space = Thyra::createVectorSpace<double>(dofs.ownedMap());
+  auto op = Thyra::createConstLinearOp<double>(Teuchos::rcp_implicit_cast<const Tpetra::Operator<double, int, long long>>(jacobian), space, space);
+  auto lows = Thyra::linearOpWithSolve(*solver.factory, op);
+  auto xThyra = Thyra::createVector(Teuchos::rcpFromRef(x), space);
+  auto bThyra = Thyra::createConstVector(Teuchos::rcpFromRef(static_cast<const Vector&>(b)), space);
+  const auto status = Thyra::solve<double>(*lows, Thyra::NOTRANS, *bThyra, xThyra.ptr());
+  EXPECT_EQ(status.solveStatus, Thyra::SOLVE_STATUS_CONVERGED);
+  jacobian->apply(x, r);
+  r.update(1.0, b, -1.0);
+  EXPECT_LT(r.norm2() / b.norm2(), 1e-8) << "true relative residual at np = " << worldComm()->getSize();
+}
+
+TEST(LinearSolve, DirectSolverIsRefusedOnMoreThanOneRank) {
+  Teuchos::ParameterList direct;
+  direct.set("Linear Solver Type", "Amesos2");
+  if (worldComm()->getSize() == 1) {
+    EXPECT_NO_THROW(solver::buildLinearSolver(direct, 3, 1));
+  } else {
+    EXPECT_THROW(solver::buildLinearSolver(direct, 3, worldComm()->getSize()), coulomb::Error);
+  }
+}
+
+}  // namespace
+}  // namespace coulomb::test
