@@ -15,7 +15,8 @@
 namespace {
 
 void usage(std::ostream& out) {
-  out << "usage: coulomb DECK.xml            run an input deck\n"
+  out << "usage: coulomb DECK.xml [-o RESULT.e]   run an input deck (result: the deck's Output/File,\n"
+         "                                        or DECK.e next to the deck; -o overrides it)\n"
          "       coulomb --help-deck         list every deck parameter (type, default, doc)\n"
          "       mpirun -np N coulomb DECK.xml\n";
 }
@@ -26,7 +27,8 @@ int main(int argc, char** argv) {
   Tpetra::ScopeGuard tpetra(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;
-  if (argc != 2) {
+  const bool withOutput = argc == 4 && std::string(argv[2]) == "-o";
+  if (argc != 2 && !withOutput) {
     if (root) usage(std::cerr);
     return 2;
   }
@@ -40,7 +42,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   try {
-    coulomb::solver::Simulation simulation(argument, comm, &std::cout);
+    coulomb::solver::Simulation simulation(argument, comm, &std::cout, withOutput ? argv[3] : "");
     simulation.run();
   } catch (const coulomb::Error& e) {
     // Every rank throws the same coulomb::Error (see core/Parallel.hpp); one prints it.

@@ -81,12 +81,13 @@ struct Simulation::Solvers {
 };
 
 Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
-                       std::ostream* console)
+                       std::ostream* console, const std::string& outputOverride)
     : comm_(comm), console_(comm->getRank() == 0 ? console : nullptr) {
   // Every rank reads the deck and the mesh itself (no broadcast needed): the
   // same files give the same errors everywhere, so all ranks fail together.
   const auto deck = readDeck(deckPath);
   settings_ = parseRunSettings(*deck, deckPath);
+  if (!outputOverride.empty()) settings_.outputFile = outputOverride;
   auto global = std::make_shared<mesh::GlobalMesh>(io::readExodus(settings_.meshFile));
   const auto model = fem::parseModelSettings(*deck, global->dimension);
   mesh_ = std::make_unique<mesh::Mesh>(global, comm_);

@@ -40,7 +40,9 @@ class Simulation {
 public:
   /// Reads and validates the deck and the mesh, builds all components.
   /// Collective; throws coulomb::Error on every rank on bad input.
-  Simulation(const std::string& deckPath, const Teuchos::RCP<const Teuchos::Comm<int>>& comm, std::ostream* console);
+  /// `outputOverride` (if not empty) replaces the deck's "Output/File".
+  Simulation(const std::string& deckPath, const Teuchos::RCP<const Teuchos::Comm<int>>& comm, std::ostream* console,
+             const std::string& outputOverride = "");
   ~Simulation();
 
   /// Runs all load steps and writes the result. Collective.
