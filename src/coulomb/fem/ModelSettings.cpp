@@ -8,6 +8,7 @@
 
 #include "coulomb/core/Error.hpp"
 #include "coulomb/io/ParameterValidation.hpp"
+#include "coulomb/io/RangeValidator.hpp"
 
 namespace coulomb::fem {
 
@@ -21,11 +22,6 @@ namespace {
 RCP<Teuchos::StringValidator> oneOf(std::initializer_list<std::string> names) {
   return rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names.begin(), names.end())));
 }
-RCP<Teuchos::EnhancedNumberValidator<double>> range(double lo, double hi) {
-  return rcp(new Teuchos::EnhancedNumberValidator<double>(lo, hi));
-}
-constexpr double kTiny = std::numeric_limits<double>::min();
-constexpr double kHuge = std::numeric_limits<double>::max();
 
 const char* const kFunctionDoc =
     "name of a sublist of 'Functions', or 'ramp' (f = t) or 'constant' (f = 1)";
@@ -58,13 +54,13 @@ void addValidModelParameters(ParameterList& valid) {
   ParameterList& material = materials.sublist("*", false, "a material");
   material.set("Model", "Linear Elastic", "small-strain linear elasticity, or compressible Neo-Hookean (total Lagrangian)",
                oneOf({"Linear Elastic", "Neo-Hookean"}));
-  material.set("Young's Modulus", 1.0, std::string(io::kRequired) + "E [force/area], > 0", range(kTiny, kHuge));
-  material.set("Poisson's Ratio", 0.0, std::string(io::kRequired) + "nu, in (-1, 0.5)", range(-1.0, 0.5));
+  material.set("Young's Modulus", 1.0, std::string(io::kRequired) + "E [force/area]", io::positive());
+  material.set("Poisson's Ratio", 0.0, std::string(io::kRequired) + "nu", rcp(new io::RangeValidator(-1.0, true, 0.5, true)));
 
   ParameterList& blocks = valid.sublist("Element Blocks", false, "One sublist per mesh element block, named as in the mesh");
   ParameterList& block = blocks.sublist("*", false, "an element block");
   block.set("Material", "", std::string(io::kRequired) + "name of a sublist of 'Materials'");
-  block.set("Thickness", 1.0, "out-of-plane thickness of 2D blocks [length]", range(kTiny, kHuge));
+  block.set("Thickness", 1.0, "out-of-plane thickness of 2D blocks [length]", io::positive());
 
   ParameterList& problem = valid.sublist("Problem", false, "Modelling assumptions");
   problem.set("Plane Assumption", "Plane Strain", "2D meshes: plane strain or plane stress",
@@ -123,8 +119,6 @@ ModelSettings parseModelSettings(const ParameterList& deck, int dimension) {
     p.model = modelName == "Neo-Hookean" ? MaterialModel::NeoHookean : MaterialModel::LinearElastic;
     p.youngsModulus = m.get<double>("Young's Modulus");
     p.poissonRatio = m.get<double>("Poisson's Ratio");
-    COULOMB_REQUIRE(p.poissonRatio < 0.5 && p.poissonRatio > -1.0,
-                    "deck: '" << where << "/Poisson's Ratio' must be in (-1, 0.5) (open interval), got " << p.poissonRatio);
     p.plane = plane == "Plane Stress" ? PlaneAssumption::PlaneStress : PlaneAssumption::PlaneStrain;
     COULOMB_REQUIRE(!(dimension == 2 && p.plane == PlaneAssumption::PlaneStress && p.model == MaterialModel::NeoHookean),
                     "deck: '" << where << "' is Neo-Hookean, which supports only 'Problem/Plane Assumption' = 'Plane Strain'");

@@ -8,6 +8,7 @@
 #include <Teuchos_XMLParameterListCoreHelpers.hpp>
 
 #include "coulomb/core/Error.hpp"
+#include "coulomb/io/RangeValidator.hpp"
 
 namespace coulomb::io {
 
@@ -49,6 +50,7 @@ std::string valueText(const Teuchos::ParameterEntry& entry) {
 /// What a validator accepts, in words; Teuchos' own message is a multi-line
 /// banner, so it is used only for validators this function does not know.
 std::string describeValidator(const Teuchos::ParameterEntryValidator& validator, const std::string& teuchosMessage) {
+  if (auto v = dynamic_cast<const RangeValidator*>(&validator)) return v->requirement();
   if (auto v = dynamic_cast<const Teuchos::EnhancedNumberValidator<double>*>(&validator)) {
     std::ostringstream out;
     out << "must be in [" << v->getMin() << ", " << v->getMax() << "]";
@@ -79,8 +81,10 @@ Teuchos::RCP<Teuchos::ParameterList> readXmlDeck(const std::string& path) {
   try {
     return Teuchos::getParametersFromXmlFile(path);
   } catch (const std::exception& e) {
-    throw Error("deck file '" + path + "' is not a valid Teuchos XML parameter list: " +
-                oneLine(e.what()));
+    // Keep the parser's own sentence ("XML parse error at line 47: ..."), not Teuchos' throw banner.
+    std::string reason = oneLine(e.what());
+    if (const auto pos = reason.find("XML parse error"); pos != std::string::npos) reason = reason.substr(pos);
+    throw Error("deck file '" + path + "' is not a valid Teuchos XML parameter list: " + reason);
   }
 }
 

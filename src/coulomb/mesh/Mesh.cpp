@@ -10,8 +10,9 @@ namespace coulomb::mesh {
 
 namespace {
 
+/// `kind` is the prefix of unnamed sets' aliases (nodeset_3), `noun` what a user calls it.
 template <typename Set>
-std::size_t findByName(const std::vector<Set>& sets, const std::string& name, const char* kind,
+std::size_t findByName(const std::vector<Set>& sets, const std::string& name, const char* kind, const char* noun,
                        const std::string& what) {
   std::string available;
   for (std::size_t i = 0; i < sets.size(); ++i) {
@@ -19,7 +20,7 @@ std::size_t findByName(const std::vector<Set>& sets, const std::string& name, co
     if (shown == name || std::string(kind) + "_" + std::to_string(sets[i].id) == name) return i;
     available += (available.empty() ? "'" : ", '") + shown + "'";
   }
-  throw Error("deck: '" + what + "' names " + kind + " '" + name + "', which the mesh does not have (" +
+  throw Error("deck: '" + what + "' names " + noun + " '" + name + "', which the mesh does not have (" +
               (available.empty() ? std::string("it has none") : "it has " + available) + ")");
 }
 
@@ -63,13 +64,13 @@ Mesh::Mesh(std::shared_ptr<const GlobalMesh> global, const Teuchos::RCP<const Te
 }
 
 std::size_t Mesh::blockIndex(const std::string& name, const std::string& what) const {
-  return findByName(global_->blocks, name, "block", what);
+  return findByName(global_->blocks, name, "block", "element block", what);
 }
 std::size_t Mesh::nodeSetIndex(const std::string& name, const std::string& what) const {
-  return findByName(global_->nodeSets, name, "nodeset", what);
+  return findByName(global_->nodeSets, name, "nodeset", "node set", what);
 }
 std::size_t Mesh::sideSetIndex(const std::string& name, const std::string& what) const {
-  return findByName(global_->sideSets, name, "sideset", what);
+  return findByName(global_->sideSets, name, "sideset", "side set", what);
 }
 
 std::size_t Mesh::blockOfElement(long long globalElement) const {

@@ -8,6 +8,7 @@
 #include "coulomb/core/Error.hpp"
 #include "coulomb/fem/ModelSettings.hpp"
 #include "coulomb/io/ParameterValidation.hpp"
+#include "coulomb/io/RangeValidator.hpp"
 
 namespace coulomb::solver {
 
@@ -20,8 +21,6 @@ template <typename T>
 Teuchos::RCP<Teuchos::EnhancedNumberValidator<T>> range(T lo, T hi) {
   return rcp(new Teuchos::EnhancedNumberValidator<T>(lo, hi));
 }
-constexpr double kTiny = std::numeric_limits<double>::min();
-constexpr double kHuge = std::numeric_limits<double>::max();
 
 std::string resolve(const std::string& file, const std::string& deckPath) {
   const std::filesystem::path p(file);
@@ -40,7 +39,7 @@ Teuchos::RCP<const ParameterList> validDeckParameters() {
 
     ParameterList& stepping = valid->sublist("Load Stepping", false, "Pseudo-time load stepping from t = 0");
     stepping.set("Number of Steps", 1, "equal steps to reach the final time", range<int>(1, 1000000));
-    stepping.set("Final Time", 1.0, "pseudo time of the last step", range<double>(kTiny, kHuge));
+    stepping.set("Final Time", 1.0, "pseudo time of the last step", io::positive());
     stepping.set("Maximum Cutbacks", 5, "times a step may be halved and retried when Newton fails", range<int>(0, 50));
 
     ParameterList& newton = valid->sublist("Newton", false, "Newton convergence");
@@ -50,7 +49,7 @@ Teuchos::RCP<const ParameterList> validDeckParameters() {
     newton.set("Relative Tolerance", defaults.relativeTolerance, "converged when ||f|| <= tol ||f_0||",
                range<double>(0.0, 1.0));
     newton.set("Absolute Tolerance", defaults.absoluteTolerance, "converged when ||f|| <= tol [force]",
-               range<double>(0.0, kHuge));
+               rcp(new io::RangeValidator(0.0, false, std::numeric_limits<double>::infinity(), true)));
 
     ParameterList& output = valid->sublist("Output", false, "Results");
     output.set("File", "", "Exodus II result file, relative to the deck's folder (default: deck name with .e)");

@@ -11,10 +11,13 @@
 
 namespace coulomb::solver {
 
-/// @brief The defaults: Belos Pseudo Block CG preconditioned by smoothed
-/// aggregation MueLu (Chebyshev smoother, coarse level solved by relaxation
-/// rather than KLU2, which is wrong on more than one rank in Debian's 13.2).
-Teuchos::RCP<Teuchos::ParameterList> defaultLinearSolverParameters(int dofsPerNode);
+/// @brief The defaults: Belos Pseudo Block CG preconditioned by MueLu
+/// (plain aggregation with rigid-body modes, symmetric Gauss-Seidel
+/// smoothing, coarsest level gathered on one rank and factored by KLU2,
+/// which is wrong when distributed in Debian's 13.2).
+/// Below 5000 DoFs the preconditioner is Ifpack2 symmetric Gauss-Seidel
+/// instead (tiny hierarchies are fragile, see the .cpp).
+Teuchos::RCP<Teuchos::ParameterList> defaultLinearSolverParameters(int dofsPerNode, long long numGlobalDofs);
 
 /// @brief Stratimikos builder output plus the MueLu sublist where the
 /// near-null space and coordinates must be set again before each setup
@@ -29,7 +32,8 @@ struct LinearSolver {
 /// @brief Completes `user` with the defaults and builds the factory. Throws
 /// coulomb::Error (one line) if Stratimikos rejects the list, or if a direct
 /// solver is asked for on more than one rank.
-LinearSolver buildLinearSolver(const Teuchos::ParameterList& user, int dofsPerNode, int numRanks);
+LinearSolver buildLinearSolver(const Teuchos::ParameterList& user, int dofsPerNode, int numRanks,
+                               long long numGlobalDofs);
 
 /// @brief Puts rigid-body modes (3 in 2D, 6 in 3D) and nodal coordinates
 /// into the MueLu sublist of `solver`, as MueLu's "Nullspace"/"Coordinates".

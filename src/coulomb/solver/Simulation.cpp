@@ -14,6 +14,7 @@
 #include "coulomb/fem/Assembler.hpp"
 #include "coulomb/fem/DofMap.hpp"
 #include "coulomb/fem/ModelSettings.hpp"
+#include "coulomb/fem/RigidBodyModes.hpp"
 #include "coulomb/io/ExodusReader.hpp"
 #include "coulomb/mesh/Mesh.hpp"
 #include "coulomb/solver/LinearSolverFactory.hpp"
@@ -31,31 +32,6 @@ std::vector<std::string> componentNames(const std::string& field, int dim) {
   std::vector<std::string> names;
   for (int c = 0; c < dim; ++c) names.push_back(field + "_" + kComponents[c]);
   return names;
-}
-
-/// Rigid-body modes on the owned DoFs (MueLu's near-null space) and nodal coordinates.
-void rigidBodyModes(const mesh::Mesh& mesh, const fem::DofMap& dofs, Teuchos::RCP<MultiVector>& modes,
-                    Teuchos::RCP<MultiVector>& coordinates) {
-  const int dim = mesh.dimension();
-  modes = Teuchos::rcp(new MultiVector(dofs.ownedMap(), dim == 2 ? 3 : 6));
-  coordinates = Teuchos::rcp(new MultiVector(dofs.ownedNodeMap(), dim));
-  auto m = modes->get2dViewNonConst();
-  auto x = coordinates->get2dViewNonConst();
-  for (int i = 0; i < mesh.numOwnedNodes(); ++i) {
-    const double* X = &mesh.global().coordinates[mesh.localNodes()[i] * dim];
-    for (int d = 0; d < dim; ++d) {
-      x[d][i] = X[d];
-      m[d][i * dim + d] = 1.0;
-    }
-    if (dim == 2) {
-      m[2][i * 2 + 0] = -X[1];
-      m[2][i * 2 + 1] = X[0];
-    } else {
-      m[3][i * 3 + 1] = -X[2], m[3][i * 3 + 2] = X[1];
-      m[4][i * 3 + 0] = X[2], m[4][i * 3 + 2] = -X[0];
-      m[5][i * 3 + 0] = -X[1], m[5][i * 3 + 1] = X[0];
-    }
-  }
 }
 
 /// Owned-DoF vector viewed as an owned-node MultiVector with one column per component.
@@ -95,8 +71,10 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
   assembler_ = std::make_unique<fem::Assembler>(*mesh_, *dofs_, model);
 
   solvers_ = std::make_unique<Solvers>();
-  solvers_->linear = buildLinearSolver(settings_.linearSolver, dofs_->dofsPerNode(), comm_->getSize());
-  rigidBodyModes(*mesh_, *dofs_, solvers_->nullspace, solvers_->coordinates);
+  solvers_->linear = buildLinearSolver(settings_.linearSolver, dofs_->dofsPerNode(), comm_->getSize(),
+                                      static_cast<long long>(dofs_->ownedMap()->getGlobalNumElements()));
+  solvers_->nullspace = fem::rigidBodyModes(*mesh_, *dofs_);
+  solvers_->coordinates = fem::nodalCoordinates(*mesh_, *dofs_);
   Solvers* s = solvers_.get();
   solvers_->model = Teuchos::rcp(new ModelEvaluator(*assembler_, dofs_->ownedMap(), solvers_->linear.factory,
                                                     [s] { setMueLuUserData(s->linear, s->nullspace, s->coordinates); }));

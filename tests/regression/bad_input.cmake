@@ -1,0 +1,58 @@
+# Bad-input catalogue: one ctest test per wrong deck (tests/regression/bad_input/).
+# Each test runs the deck from a fresh copy in the build tree under mpirun and
+# checks (expect_error.sh): non-zero exit; exactly one "coulomb: error:" line,
+# naming the culprit (REGEX); no result file NAME.e; no hang (TIMEOUT).
+#
+# coulomb_bad_input(CASE REGEX [NP n...] [CDL mesh.cdl...])
+#   CASE   deck bad_input/CASE.xml; tests are named BadInput.CASE.np<n>
+#   REGEX  extended regex (grep -E) the error line must match
+#   NP     rank counts to run at (default 2)
+#   CDL    CDL files in bad_input/ made into Exodus meshes next to the deck copy
+set(COULOMB_BAD_INPUT_SOURCE ${CMAKE_CURRENT_SOURCE_DIR}/bad_input)
+set(COULOMB_BAD_INPUT_BINARY ${CMAKE_CURRENT_BINARY_DIR}/bad_input)
+
+function(coulomb_bad_input case regex)
+  cmake_parse_arguments(ARG "" "" "NP;CDL" ${ARGN})
+  if(NOT ARG_NP)
+    set(ARG_NP 2)
+  endif()
+  set(cdl_options)
+  foreach(cdl IN LISTS ARG_CDL)
+    list(APPEND cdl_options --cdl ${COULOMB_BAD_INPUT_SOURCE}/${cdl})
+  endforeach()
+  foreach(np IN LISTS ARG_NP)
+    set(test BadInput.${case}.np${np})
+    add_test(NAME ${test}
+             COMMAND bash ${CMAKE_CURRENT_SOURCE_DIR}/expect_error.sh
+                     --exe ${COULOMB_EXE}
+                     --workdir ${COULOMB_BAD_INPUT_BINARY}/${test}
+                     --meshes ${PROJECT_SOURCE_DIR}/exodus_meshes
+                     ${cdl_options}
+                     "${regex}" ${COULOMB_BAD_INPUT_SOURCE}/${case}.xml ${np} ${COULOMB_MPIEXEC})
+    set_tests_properties(${test} PROPERTIES
+      TIMEOUT 60 PROCESSORS ${np} SKIP_RETURN_CODE 77 LABELS "regression;bad_input")
+  endforeach()
+endfunction()
+
+# Deck syntax and validation.
+coulomb_bad_input(malformed_xml "malformed_xml[.]xml.*not a valid" NP 1 2)
+coulomb_bad_input(unknown_parameter_young_modulus "'Materials/steel/Young Modulus'" NP 1 2)
+coulomb_bad_input(wrong_type_number_of_steps "'Load Stepping/Number of Steps'.*type.*int")
+coulomb_bad_input(negative_youngs_modulus "'Materials/steel/Young's Modulus'")
+coulomb_bad_input(poisson_ratio_half "'Materials/steel/Poisson's Ratio'")
+coulomb_bad_input(poisson_ratio_0_7 "'Materials/steel/Poisson's Ratio'")
+coulomb_bad_input(zero_load_steps "'Load Stepping/Number of Steps'")
+coulomb_bad_input(missing_mesh_sublist "'Mesh'.*missing")
+coulomb_bad_input(unknown_function "'Neumann Conditions/top pressure/Function'.*'loading'")
+
+# Deck against mesh.
+coulomb_bad_input(missing_mesh_file "no_such_mesh[.]e")
+coulomb_bad_input(unknown_element_block "'bodyy'")
+coulomb_bad_input(mesh_block_without_entry "block 'body'.*'Element Blocks'")
+coulomb_bad_input(unknown_node_set "'Dirichlet Conditions/symmetry z/Node Set'.*node ?set 'botom'")
+coulomb_bad_input(unknown_side_set "'Neumann Conditions/top pressure/Side Set'.*side ?set 'upper'")
+
+# Meshes Coulomb cannot use (made from CDL text with ncgen at test time).
+coulomb_bad_input(unsupported_element_hex20 "hex20_block[.]e.*'quadratic'.*HEX20" CDL hex20_block.cdl)
+coulomb_bad_input(unsupported_element_truss "truss_block[.]e.*'tie'.*TRUSS" CDL truss_block.cdl)
+coulomb_bad_input(inverted_element "element 2 of block 'body'.*inverted" CDL inverted_hex8.cdl)
