@@ -43,7 +43,7 @@ Teuchos::RCP<Teuchos::ParameterList> defaultLinearSolverParameters(int dofsPerNo
   auto& muelu = p->sublist("Preconditioner Types").sublist("MueLu");
   muelu.set("verbosity", "none");
   muelu.set("number of equations", dofsPerNode);
-  // Measured on the 67k-DoF hertz3d_r2 bulk system (docs/performance.md):
+  // Measured on the 67k-DoF hertz3d_r2 bulk system (tests/performance/README.md):
   // plain aggregation with the rigid-body modes needs 27 CG iterations
   // against 24 for smoothed aggregation, but sets up 3x faster.
   muelu.set("multigrid algorithm", "unsmoothed");
