@@ -18,21 +18,10 @@
 #include <vector>
 
 #include "coulomb/core/Error.hpp"
+#include "coulomb/io/ExodusError.hpp"
 
 namespace coulomb::io {
 namespace {
-
-/// The exodus library's last error message (empty when it has none).
-std::string lastExodusError() {
-  const char* message = nullptr;
-  const char* function = nullptr;
-  int code = 0;
-  ex_get_err(&message, &function, &code);
-  std::string text;
-  if (function && *function) text += std::string(function) + ": ";
-  if (message && *message) text += message;
-  return text;
-}
 
 /// Closes the file however readExodus() leaves.
 struct FileGuard {

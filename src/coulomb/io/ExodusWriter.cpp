@@ -15,20 +15,10 @@
 #include <utility>
 
 #include "coulomb/core/Error.hpp"
+#include "coulomb/io/ExodusError.hpp"
 
 namespace coulomb::io {
 namespace {
-
-std::string lastExodusError() {
-  const char* message = nullptr;
-  const char* function = nullptr;
-  int code = 0;
-  ex_get_err(&message, &function, &code);
-  std::string text;
-  if (function && *function) text += std::string(function) + ": ";
-  if (message && *message) text += message;
-  return text;
-}
 
 /// Exodus names are limited by the library's maximum name length (the file's
 /// name dimension is sized to the longest name, see writeMesh); longer names
