@@ -73,7 +73,7 @@ struct AssembledSystem {
 
   solver::LinearSolver buildSolver(const Teuchos::ParameterList& parameters) const {
     const auto& dofs = simulation->dofMap();
-    auto s = solver::buildLinearSolver(parameters, dofs.dofsPerNode(), worldComm()->getSize(), numDofs());
+    auto s = solver::buildLinearSolver(parameters, dofs.dofsPerNode(), numDofs());
     solver::setMueLuUserData(s, fem::rigidBodyModes(simulation->mesh(), dofs),
                              fem::nodalCoordinates(simulation->mesh(), dofs));
     return s;
@@ -225,7 +225,7 @@ TEST(GatheredDirect, NonContiguousScatteredIndicesAreRenumbered) {
     for (std::size_t k = 0; k < mine.size(); ++k) e[k] = std::sin(0.1 * static_cast<double>(mine[k]));
   }
   a->apply(exact, b);
-  auto direct = solver::buildLinearSolver(directParameters(), 1, size, n);
+  auto direct = solver::buildLinearSolver(directParameters(), 1, n);
   auto lows = Thyra::linearOpWithSolve(*direct.factory, thyraOperator(a));
   const auto status = solveWith(*lows, b, x);
   EXPECT_EQ(status.solveStatus, Thyra::SOLVE_STATUS_CONVERGED) << status.message;
@@ -245,25 +245,25 @@ TEST(GatheredDirect, SingularMatrixFailsOnEveryRank) {
     a->insertGlobalValues(row, Teuchos::tuple<GlobalOrdinal>(row), Teuchos::tuple<double>(row == n - 1 ? 0.0 : 1.0 + row));
   }
   a->fillComplete();
-  auto direct = solver::buildLinearSolver(directParameters(), 1, comm->getSize(), n);
+  auto direct = solver::buildLinearSolver(directParameters(), 1, n);
   auto lows = direct.factory->createOp();
   EXPECT_THROW(Thyra::initializeOp<double>(*direct.factory, thyraOperator(a), lows.ptr()), coulomb::Error);
 }
 
 TEST(GatheredDirect, UnknownSolverTypeIsADeckError) {
-  EXPECT_THROW(solver::buildLinearSolver(directParameters("NoSuchSolver"), 3, worldComm()->getSize(), 1000),
+  EXPECT_THROW(solver::buildLinearSolver(directParameters("NoSuchSolver"), 3, 1000),
                coulomb::Error);
   auto unknown = directParameters();
   unknown.sublist("Linear Solver Types").sublist("Amesos2").set("Solver Typo", "KLU2");
-  EXPECT_THROW(solver::buildLinearSolver(unknown, 3, worldComm()->getSize(), 1000), coulomb::Error);
+  EXPECT_THROW(solver::buildLinearSolver(unknown, 3, 1000), coulomb::Error);
 #if TRILINOS_MAJOR_MINOR_VERSION < 140000
   // Tacho segfaults in 13.2 even on one process: refused with a message.
-  EXPECT_THROW(solver::buildLinearSolver(directParameters("Tacho"), 3, worldComm()->getSize(), 1000), coulomb::Error);
+  EXPECT_THROW(solver::buildLinearSolver(directParameters("Tacho"), 3, 1000), coulomb::Error);
 #endif
   // Amesos2's own parameters go in the free sublist "Amesos2 Settings".
   auto settings = directParameters();
   settings.sublist("Linear Solver Types").sublist("Amesos2").sublist("Amesos2 Settings").sublist("KLU2").set("Trans", "NOTRANS");
-  EXPECT_NO_THROW(solver::buildLinearSolver(settings, 3, worldComm()->getSize(), 1000));
+  EXPECT_NO_THROW(solver::buildLinearSolver(settings, 3, 1000));
 }
 
 TEST(GatheredDirect, DeckRunMatchesDefaultSolver) {

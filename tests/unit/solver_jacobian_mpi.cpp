@@ -11,7 +11,6 @@
 #include <Tpetra_Vector.hpp>
 
 #include "TestSupport.hpp"
-#include "coulomb/core/Error.hpp"
 #include "coulomb/fem/Assembler.hpp"
 #include "coulomb/fem/DofMap.hpp"
 #include "coulomb/fem/RigidBodyModes.hpp"
@@ -98,7 +97,7 @@ TEST_P(LinearSolve, TrueResidualOfDefaultSolverIsSmall) {
   assembler.assemble(0.5, u, &b, jacobian.get());
   b.scale(-1.0);
 
-  auto solver = solver::buildLinearSolver(Teuchos::ParameterList(), dofs.dofsPerNode(), worldComm()->getSize(),
+  auto solver = solver::buildLinearSolver(Teuchos::ParameterList(), dofs.dofsPerNode(),
                                           static_cast<long long>(dofs.ownedMap()->getGlobalNumElements()));
   solver::setMueLuUserData(solver, fem::rigidBodyModes(simulation.mesh(), dofs), fem::nodalCoordinates(simulation.mesh(), dofs));
   auto space = Thyra::createVectorSpace<double>(dofs.ownedMap());

@@ -62,7 +62,7 @@ Teuchos::RCP<Teuchos::ParameterList> defaultLinearSolverParameters(int dofsPerNo
   return p;
 }
 
-LinearSolver buildLinearSolver(const Teuchos::ParameterList& user, int dofsPerNode, int /*numRanks*/,
+LinearSolver buildLinearSolver(const Teuchos::ParameterList& user, int dofsPerNode,
                                long long numGlobalDofs) {
   LinearSolver solver;
   solver.parameters = Teuchos::rcp(new Teuchos::ParameterList(user));

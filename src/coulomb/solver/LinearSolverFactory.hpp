@@ -30,9 +30,9 @@ struct LinearSolver {
 };
 
 /// @brief Completes `user` with the defaults and builds the factory. Throws
-/// coulomb::Error (one line) if Stratimikos rejects the list, or if a direct
-/// solver is asked for on more than one rank.
-LinearSolver buildLinearSolver(const Teuchos::ParameterList& user, int dofsPerNode, int numRanks,
+/// coulomb::Error (one line) if Stratimikos rejects the list. "Amesos2" is
+/// served by GatheredDirectSolverFactory (factored on one rank) at any rank count.
+LinearSolver buildLinearSolver(const Teuchos::ParameterList& user, int dofsPerNode,
                                long long numGlobalDofs);
 
 /// @brief Puts rigid-body modes (3 in 2D, 6 in 3D) and nodal coordinates

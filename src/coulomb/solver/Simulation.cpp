@@ -71,7 +71,7 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
   assembler_ = std::make_unique<fem::Assembler>(*mesh_, *dofs_, model);
 
   solvers_ = std::make_unique<Solvers>();
-  solvers_->linear = buildLinearSolver(settings_.linearSolver, dofs_->dofsPerNode(), comm_->getSize(),
+  solvers_->linear = buildLinearSolver(settings_.linearSolver, dofs_->dofsPerNode(),
                                       static_cast<long long>(dofs_->ownedMap()->getGlobalNumElements()));
   solvers_->nullspace = fem::rigidBodyModes(*mesh_, *dofs_);
   solvers_->coordinates = fem::nodalCoordinates(*mesh_, *dofs_);

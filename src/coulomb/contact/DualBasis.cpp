@@ -1,0 +1,186 @@
+/// @file DualBasis.cpp
+/// @brief Element mass matrices and dual-basis coefficients of slave faces.
+#include "coulomb/contact/DualBasis.hpp"
+
+#include <Sacado.hpp>
+#include <algorithm>
+#include <cmath>
+
+#include "coulomb/core/Error.hpp"
+#include "coulomb/fem/Quadrature.hpp"
+
+namespace coulomb::contact {
+namespace {
+
+template <typename T>
+double valueOf(const T& x) {
+  return Sacado::ScalarValue<T>::eval(x);
+}
+
+/// Tangent vectors t_i = sum_a g[a][i] x_a of a face at one point.
+template <mesh::FaceType F, typename T, typename G>
+std::array<std::array<T, FaceTraits<F>::spaceDim>, FaceTraits<F>::paramDim> tangents(const FaceNodes<F, T>& x,
+                                                                                     const G& g) {
+  std::array<std::array<T, FaceTraits<F>::spaceDim>, FaceTraits<F>::paramDim> t{};
+  for (int i = 0; i < FaceTraits<F>::paramDim; ++i)
+    for (int d = 0; d < FaceTraits<F>::spaceDim; ++d) {
+      t[i][d] = 0.0;
+      for (int a = 0; a < FaceTraits<F>::nodes; ++a) t[i][d] += g[a][i] * x[a][d];
+    }
+  return t;
+}
+
+/// |x_xi| (Line2) or |x_xi × x_eta| (Tri3, Quad4) from the tangents.
+template <mesh::FaceType F, typename T>
+T measureFromTangents(const std::array<std::array<T, FaceTraits<F>::spaceDim>, FaceTraits<F>::paramDim>& t) {
+  using std::sqrt;
+  if constexpr (F == mesh::FaceType::Line2) {
+    return sqrt(t[0][0] * t[0][0] + t[0][1] * t[0][1]);
+  } else {
+    const T c0 = t[0][1] * t[1][2] - t[0][2] * t[1][1];
+    const T c1 = t[0][2] * t[1][0] - t[0][0] * t[1][2];
+    const T c2 = t[0][0] * t[1][1] - t[0][1] * t[1][0];
+    return sqrt(c0 * c0 + c1 * c1 + c2 * c2);
+  }
+}
+
+/// Quadrature of the face mass matrices: points, weights, N and dN/dxi (all
+/// coordinate independent). Line2/Tri3 reuse fem's rules (exact for the constant
+/// measure); Quad4 uses 3x3 Gauss (exact for plane quadrilaterals).
+template <mesh::FaceType F>
+struct MassRule {
+  static constexpr int n = FaceTraits<F>::nodes;
+  static constexpr int pd = FaceTraits<F>::paramDim;
+  static constexpr int points = F == mesh::FaceType::Line2 ? 2 : F == mesh::FaceType::Tri3 ? 3 : 9;
+  std::array<double, points> weight{};
+  std::array<NodalValues<F, double>, points> N{};
+  std::array<std::array<std::array<double, pd>, n>, points> dN{};
+};
+
+template <mesh::FaceType F>
+MassRule<F> makeMassRule() {
+  MassRule<F> rule;
+  if constexpr (F == mesh::FaceType::Quad4) {
+    const double g = std::sqrt(0.6);
+    const double gx[3] = {-g, 0.0, g};
+    const double gw[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 3; ++i) {
+        const int q = 3 * j + i;
+        const FacePoint<F, double> xi{gx[i], gx[j]};
+        rule.weight[q] = gw[i] * gw[j];
+        rule.N[q] = faceShapeValues<F, double>(xi);
+        rule.dN[q] = faceShapeGradients<F, double>(xi);
+      }
+  } else {
+    constexpr fem::ReferenceShape S = fem::referenceShape(F);
+    const fem::QuadratureRule<S>& quad = fem::quadratureRule<S>();
+    static_assert(fem::QuadratureRule<S>::points == MassRule<F>::points);
+    for (int q = 0; q < MassRule<F>::points; ++q) {
+      FacePoint<F, double> xi{};
+      for (int i = 0; i < FaceTraits<F>::paramDim; ++i) xi[i] = quad.xi[q][i];
+      rule.weight[q] = quad.weight[q];
+      rule.N[q] = faceShapeValues<F, double>(xi);
+      rule.dN[q] = faceShapeGradients<F, double>(xi);
+    }
+  }
+  return rule;
+}
+
+template <mesh::FaceType F>
+const MassRule<F>& massRule() {
+  static const MassRule<F> rule = makeMassRule<F>();
+  return rule;
+}
+
+}  // namespace
+
+template <mesh::FaceType F, typename T>
+T surfaceJacobian(const FaceNodes<F, T>& x, const FacePoint<F, T>& xi) {
+  return measureFromTangents<F, T>(tangents<F, T>(x, faceShapeGradients<F, T>(xi)));
+}
+
+template <mesh::FaceType F, typename T>
+FaceMass<F, T> faceMass(const FaceNodes<F, T>& x) {
+  constexpr int n = FaceTraits<F>::nodes;
+  const MassRule<F>& rule = massRule<F>();
+  FaceMass<F, T> mass;
+  for (int j = 0; j < n; ++j) {
+    mass.De[j] = 0.0;
+    for (int k = 0; k < n; ++k) mass.Me[j][k] = 0.0;
+  }
+  for (int q = 0; q < MassRule<F>::points; ++q) {
+    const T dA = rule.weight[q] * measureFromTangents<F, T>(tangents<F, T>(x, rule.dN[q]));
+    for (int j = 0; j < n; ++j) {
+      mass.De[j] += rule.N[q][j] * dA;
+      for (int k = 0; k < n; ++k) mass.Me[j][k] += rule.N[q][j] * rule.N[q][k] * dA;
+    }
+  }
+  return mass;
+}
+
+template <mesh::FaceType F, typename T>
+NodalMatrix<F, T> dualCoefficients(const FaceNodes<F, T>& x) {
+  constexpr int n = FaceTraits<F>::nodes;
+  const FaceMass<F, T> mass = faceMass<F, T>(x);
+  // Cholesky M_e = L L^T (M_e is symmetric positive definite for a non-degenerate face).
+  NodalMatrix<F, T> L{};
+  double scale = 0.0;
+  for (int j = 0; j < n; ++j) scale = std::max(scale, std::abs(valueOf(mass.Me[j][j])));
+  for (int j = 0; j < n; ++j) {
+    for (int k = 0; k <= j; ++k) {
+      T s = mass.Me[j][k];
+      for (int m = 0; m < k; ++m) s -= L[j][m] * L[k][m];
+      if (k == j) {
+        COULOMB_REQUIRE(valueOf(s) > 1e-14 * scale && std::isfinite(valueOf(s)),
+                        "dual basis: degenerate slave face (element mass matrix not positive definite)");
+        using std::sqrt;
+        L[j][j] = sqrt(s);
+      } else {
+        L[j][k] = s / L[k][k];
+      }
+    }
+  }
+  // Row j of A solves M_e a_j = De_j e_j (M_e symmetric): A M_e = D_e.
+  NodalMatrix<F, T> A{};
+  for (int j = 0; j < n; ++j) {
+    std::array<T, n> y{};
+    for (int r = 0; r < n; ++r) {
+      T s = (r == j) ? mass.De[j] : T(0.0);
+      for (int m = 0; m < r; ++m) s -= L[r][m] * y[m];
+      y[r] = s / L[r][r];
+    }
+    for (int r = n - 1; r >= 0; --r) {
+      T s = y[r];
+      for (int m = r + 1; m < n; ++m) s -= L[m][r] * A[j][m];
+      A[j][r] = s / L[r][r];
+    }
+  }
+  return A;
+}
+
+#define COULOMB_CONTACT_DUAL_INSTANTIATE(F, T)                                              \
+  template T surfaceJacobian<F, T>(const FaceNodes<F, T>&, const FacePoint<F, T>&);         \
+  template FaceMass<F, T> faceMass<F, T>(const FaceNodes<F, T>&);                           \
+  template NodalMatrix<F, T> dualCoefficients<F, T>(const FaceNodes<F, T>&);
+#define COULOMB_CONTACT_DUAL_ALL_FACES(T)                  \
+  COULOMB_CONTACT_DUAL_INSTANTIATE(mesh::FaceType::Line2, T) \
+  COULOMB_CONTACT_DUAL_INSTANTIATE(mesh::FaceType::Tri3, T)  \
+  COULOMB_CONTACT_DUAL_INSTANTIATE(mesh::FaceType::Quad4, T)
+
+// The scalar types of the mortar kernels (MortarSegment2D.cpp, MortarSegment3D.cpp).
+using Fad12 = Sacado::Fad::SFad<double, 12>;
+using Fad27 = Sacado::Fad::SFad<double, 27>;
+using Fad30 = Sacado::Fad::SFad<double, 30>;
+using Fad33 = Sacado::Fad::SFad<double, 33>;
+using Fad36 = Sacado::Fad::SFad<double, 36>;
+COULOMB_CONTACT_DUAL_ALL_FACES(double)
+COULOMB_CONTACT_DUAL_ALL_FACES(Fad12)
+COULOMB_CONTACT_DUAL_ALL_FACES(Fad27)
+COULOMB_CONTACT_DUAL_ALL_FACES(Fad30)
+COULOMB_CONTACT_DUAL_ALL_FACES(Fad33)
+COULOMB_CONTACT_DUAL_ALL_FACES(Fad36)
+#undef COULOMB_CONTACT_DUAL_ALL_FACES
+#undef COULOMB_CONTACT_DUAL_INSTANTIATE
+
+}  // namespace coulomb::contact

@@ -1,0 +1,147 @@
+#pragma once
+/// @file DualBasis.hpp
+/// @brief Standard and dual (biorthogonal) shape functions of a slave face
+/// (Line2 in 2D, Tri3 / Quad4 in 3D), templated on the scalar type.
+///
+/// Reference faces (same node order as fem/ShapeFunctions.hpp, Exodus):
+///   Line2 on [-1,1]            nodes -1, +1
+///   Tri3  on the unit simplex   (0,0) (1,0) (0,1)
+///   Quad4 on [-1,1]^2           (-1,-1) (1,-1) (1,1) (-1,1)
+///
+/// Dual basis (thesis §4.3.3, "dual Lagrange multipliers"; Wohlmuth's
+/// biorthogonality): on a slave face gamma_e with standard shape functions N_k,
+///   Phi_j(xi) = sum_k A_jk N_k(xi),   A = D_e M_e^{-1},
+///   D_e = diag( int_{gamma_e} N_j dA ),  M_e = [ int_{gamma_e} N_j N_k dA ],
+/// so that  int_{gamma_e} Phi_j N_k dA = delta_jk int_{gamma_e} N_k dA  and
+/// sum_j Phi_j = 1 (because the rows of M_e sum to D_e).
+/// dA is the current-configuration surface measure |dx/dxi| dxi (Line2: |x1-x0|/2,
+/// Tri3/Quad4: |x_xi × x_eta|). For Line2 and Tri3 the measure is constant on the
+/// face and A is the fixed matrix [[2,-1],[-1,2]] resp. 4 I - 1 1^T (i.e. 3 on the
+/// diagonal, -1 off it); for a Quad4 it depends on the coordinates unless the face
+/// is a parallelogram.
+///
+/// Integration: Line2 2-point Gauss, Tri3 the 3-point degree-2 rule (both from
+/// fem/Quadrature, exact); Quad4 3x3 Gauss: exact for plane quadrilaterals
+/// (integrand N_j N_k det J of degree <= 3 per variable), an approximation for
+/// warped ones (|x_xi × x_eta| is then not polynomial; biorthogonality then holds
+/// for that rule only).
+///
+/// Scalar types: the functions declared here are explicitly instantiated in
+/// DualBasis.cpp for double and for Sacado::Fad::SFad<double, N> with
+/// N = 12, 27, 30, 33, 36 (the input counts of the mortar segment kernels); only
+/// the double instantiations are declared `extern` below so that this header
+/// does not need Sacado. The inline helpers work for any scalar with + - *.
+#include <array>
+
+#include "coulomb/mesh/CellType.hpp"
+
+namespace coulomb::contact {
+
+/// @brief Compile-time sizes of a face: nodes, parametric and spatial dimension.
+template <mesh::FaceType F>
+struct FaceTraits {
+  static constexpr int nodes = mesh::numNodes(F);
+  static constexpr int paramDim = F == mesh::FaceType::Line2 ? 1 : 2;
+  static constexpr int spaceDim = F == mesh::FaceType::Line2 ? 2 : 3;
+};
+
+/// Nodal coordinates (or nodal vectors such as normals): x[a][i].
+template <mesh::FaceType F, typename T>
+using FaceNodes = std::array<std::array<T, FaceTraits<F>::spaceDim>, FaceTraits<F>::nodes>;
+/// A point of the reference face.
+template <mesh::FaceType F, typename T>
+using FacePoint = std::array<T, FaceTraits<F>::paramDim>;
+/// One value per face node.
+template <mesh::FaceType F, typename T>
+using NodalValues = std::array<T, FaceTraits<F>::nodes>;
+/// A nodes x nodes matrix, m[j][k].
+template <mesh::FaceType F, typename T>
+using NodalMatrix = std::array<std::array<T, FaceTraits<F>::nodes>, FaceTraits<F>::nodes>;
+
+/// @brief Standard (Lagrange) shape functions N_a(xi) of the reference face.
+template <mesh::FaceType F, typename X>
+inline NodalValues<F, X> faceShapeValues(const FacePoint<F, X>& xi) {
+  if constexpr (F == mesh::FaceType::Line2) {
+    return {X(0.5 * (1.0 - xi[0])), X(0.5 * (1.0 + xi[0]))};
+  } else if constexpr (F == mesh::FaceType::Tri3) {
+    return {X(1.0 - xi[0] - xi[1]), xi[0], xi[1]};
+  } else {
+    const X a = 1.0 - xi[0], b = 1.0 + xi[0], c = 1.0 - xi[1], d = 1.0 + xi[1];
+    return {X(0.25 * a * c), X(0.25 * b * c), X(0.25 * b * d), X(0.25 * a * d)};
+  }
+}
+
+/// @brief Parametric gradients g[a][i] = dN_a/dxi_i of the reference face.
+template <mesh::FaceType F, typename X>
+inline std::array<std::array<X, FaceTraits<F>::paramDim>, FaceTraits<F>::nodes> faceShapeGradients(
+    const FacePoint<F, X>& xi) {
+  if constexpr (F == mesh::FaceType::Line2) {
+    (void)xi;
+    return {{{X(-0.5)}, {X(0.5)}}};
+  } else if constexpr (F == mesh::FaceType::Tri3) {
+    (void)xi;
+    return {{{X(-1.0), X(-1.0)}, {X(1.0), X(0.0)}, {X(0.0), X(1.0)}}};
+  } else {
+    const X a = 1.0 - xi[0], b = 1.0 + xi[0], c = 1.0 - xi[1], d = 1.0 + xi[1];
+    return {{{X(-0.25 * c), X(-0.25 * a)},
+             {X(0.25 * c), X(-0.25 * b)},
+             {X(0.25 * d), X(0.25 * b)},
+             {X(-0.25 * d), X(0.25 * a)}}};
+  }
+}
+
+/// @brief Dual shape functions Phi_j = sum_k A_jk N_k at xi, from the coefficients A.
+template <mesh::FaceType F, typename T, typename X>
+inline NodalValues<F, T> dualShapeValues(const NodalMatrix<F, T>& A, const FacePoint<F, X>& xi) {
+  const NodalValues<F, X> N = faceShapeValues<F, X>(xi);
+  NodalValues<F, T> phi{};
+  for (int j = 0; j < FaceTraits<F>::nodes; ++j) {
+    phi[j] = 0.0;
+    for (int k = 0; k < FaceTraits<F>::nodes; ++k) phi[j] += A[j][k] * N[k];
+  }
+  return phi;
+}
+
+/// @brief Point x(xi) = sum_a N_a(xi) x_a of the face.
+template <mesh::FaceType F, typename T, typename X>
+inline std::array<T, FaceTraits<F>::spaceDim> facePoint(const FaceNodes<F, T>& x, const FacePoint<F, X>& xi) {
+  const NodalValues<F, X> N = faceShapeValues<F, X>(xi);
+  std::array<T, FaceTraits<F>::spaceDim> p{};
+  for (int i = 0; i < FaceTraits<F>::spaceDim; ++i) {
+    p[i] = 0.0;
+    for (int a = 0; a < FaceTraits<F>::nodes; ++a) p[i] += N[a] * x[a][i];
+  }
+  return p;
+}
+
+/// @brief Surface measure |dx/dxi| at xi: Line2 |x1 - x0|/2, Tri3/Quad4 |x_xi × x_eta|.
+template <mesh::FaceType F, typename T>
+T surfaceJacobian(const FaceNodes<F, T>& x, const FacePoint<F, T>& xi);
+
+/// @brief Element integrals of the standard basis on the current face.
+template <mesh::FaceType F, typename T>
+struct FaceMass {
+  NodalValues<F, T> De{};  ///< De[j] = int N_j dA
+  NodalMatrix<F, T> Me{};  ///< Me[j][k] = int N_j N_k dA
+};
+
+/// @brief D_e and M_e of the face with nodal coordinates x.
+template <mesh::FaceType F, typename T>
+FaceMass<F, T> faceMass(const FaceNodes<F, T>& x);
+
+/// @brief Dual coefficients A = D_e M_e^{-1} (A[j][k]) of the face with nodal coordinates x.
+/// Throws coulomb::Error for a degenerate face (M_e not positive definite).
+template <mesh::FaceType F, typename T>
+NodalMatrix<F, T> dualCoefficients(const FaceNodes<F, T>& x);
+
+#define COULOMB_CONTACT_DUAL_EXTERN(F)                                                            \
+  extern template double surfaceJacobian<F, double>(const FaceNodes<F, double>&,                  \
+                                                    const FacePoint<F, double>&);                 \
+  extern template FaceMass<F, double> faceMass<F, double>(const FaceNodes<F, double>&);           \
+  extern template NodalMatrix<F, double> dualCoefficients<F, double>(const FaceNodes<F, double>&);
+COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Line2)
+COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Tri3)
+COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Quad4)
+#undef COULOMB_CONTACT_DUAL_EXTERN
+
+}  // namespace coulomb::contact
