@@ -6,19 +6,27 @@
 #include <cmath>
 #include <iostream>
 
+#include <filesystem>
+
 #include "TestSupport.hpp"
+#include "coulomb/core/Error.hpp"
+#include "coulomb/io/ExodusResults.hpp"
 
 namespace coulomb::test {
 namespace {
 
-TEST(FiniteStrain, LargeRotationConvergesQuadraticallyToExactField) {
-  const std::string dir = scratchDirectory("finite_strain");
+/// u = (F - I) X with F = R_z(60 deg) diag(1.2, 0.9, 1.05) on every face of
+/// a Neo-Hookean cube, reached in `steps` load steps.
+std::string rotationDeck(const std::string& name, int steps, int maximumCutbacks, double F[3][3]) {
+  const std::string dir = scratchDirectory(name);
   const double theta = M_PI / 3;
   const double U[3] = {1.2, 0.9, 1.05};  // principal stretches along x, y, z
   // F = R_z(theta) diag(U); u = (F - I) X
-  double F[3][3] = {{std::cos(theta) * U[0], -std::sin(theta) * U[1], 0},
-                    {std::sin(theta) * U[0], std::cos(theta) * U[1], 0},
-                    {0, 0, U[2]}};
+  const double rotation[3][3] = {{std::cos(theta) * U[0], -std::sin(theta) * U[1], 0},
+                                 {std::sin(theta) * U[0], std::cos(theta) * U[1], 0},
+                                 {0, 0, U[2]}};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) F[i][j] = rotation[i][j];
   const char* axes[] = {"x", "y", "z"};
   std::string body = "<ParameterList name=\"Dirichlet Conditions\">";
   for (const char* set : {"left", "right", "bottom", "top", "front", "back"})
@@ -27,7 +35,9 @@ TEST(FiniteStrain, LargeRotationConvergesQuadraticallyToExactField) {
       c[i] -= 1.0;
       body += dirichletXml(std::string(set) + "_" + axes[i], set, axes[i], 0.0, c);
     }
-  body += "</ParameterList><ParameterList name=\"Load Stepping\"><Parameter name=\"Number of Steps\" type=\"int\" value=\"12\"/></ParameterList>"
+  body += "</ParameterList><ParameterList name=\"Load Stepping\"><Parameter name=\"Number of Steps\" type=\"int\" value=\"" + std::to_string(steps) +
+          "\"/><Parameter name=\"Maximum Cutbacks\" type=\"int\" value=\"" + std::to_string(maximumCutbacks) +
+          "\"/></ParameterList>"
           "<ParameterList name=\"Newton\"><Parameter name=\"Relative Tolerance\" type=\"double\" value=\"1e-11\"/>"
           "<Parameter name=\"Absolute Tolerance\" type=\"double\" value=\"1e-12\"/></ParameterList>"
           "<ParameterList name=\"Linear Solver\"><Parameter name=\"Linear Solver Type\" type=\"string\" value=\"Belos\"/>"
@@ -42,8 +52,12 @@ TEST(FiniteStrain, LargeRotationConvergesQuadraticallyToExactField) {
       "<Parameter name=\"Poisson's Ratio\" type=\"double\" value=\"0.3\"/>";
   const std::string deck = dir + "/rotation.xml";
   writeOnRoot(deck, deckXml(shippedMesh("block3d.e"), material, body));
+  return deck;
+}
 
-  solver::Simulation simulation(deck, worldComm(), nullptr);
+TEST(FiniteStrain, LargeRotationConvergesQuadraticallyToExactField) {
+  double F[3][3];
+  solver::Simulation simulation(rotationDeck("finite_strain", 12, 5, F), worldComm(), nullptr);
   const auto summary = simulation.run();
   ASSERT_EQ(summary.steps, 12);
   ASSERT_EQ(summary.cutbacks, 0);
@@ -77,6 +91,37 @@ TEST(FiniteStrain, LargeRotationConvergesQuadraticallyToExactField) {
     }
     EXPECT_GE(checked, 1) << "no iteration in the asymptotic range";
   }
+}
+
+// One step of 60 degrees inverts boundary elements in the first iterate:
+// the stepper must halve the step until Newton converges, and write only
+// converged steps.
+TEST(FiniteStrain, FailedStepsAreCutBackAndNotWritten) {
+  double F[3][3];
+  const std::string deck = rotationDeck("cutback", 1, 6, F);
+  solver::Simulation simulation(deck, worldComm(), nullptr);
+  const auto summary = simulation.run();
+  EXPECT_GE(summary.cutbacks, 2);
+  EXPECT_DOUBLE_EQ(summary.stepTimes.back(), 1.0);
+  if (worldComm()->getRank() == 0) {
+    const auto written = io::readExodusResults(simulation.settings().outputFile);
+    EXPECT_EQ(written.times, summary.stepTimes);
+    EXPECT_LT(written.times.front(), 0.5);  // the first converged step is a cut one
+  }
+}
+
+TEST(FiniteStrain, RunStopsWhenCutbacksAreExhausted) {
+  double F[3][3];
+  const std::string deck = rotationDeck("no_cutback", 1, 0, F);
+  solver::Simulation simulation(deck, worldComm(), nullptr);
+  try {
+    simulation.run();
+    FAIL() << "a step that cannot converge must end the run";
+  } catch (const coulomb::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("Maximum Cutbacks"), std::string::npos) << e.what();
+  }
+  worldComm()->barrier();
+  EXPECT_FALSE(std::filesystem::exists(simulation.settings().outputFile)) << "no complete-looking result may remain";
 }
 
 }  // namespace
