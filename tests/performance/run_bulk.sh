@@ -10,7 +10,8 @@
 #                     second table gives the median over the undisturbed repeats
 #     --wait-idle SEC before each run wait up to SEC s for an idle machine
 #                     (default 120; 0 = no wait). Runs during which other
-#                     processes used > 10 % of the wall time are marked "*".
+#                     processes used > max(0.3 s, 10 % of the wall time) of CPU
+#                     are marked "*" (disturbed).
 #     --quick         r1 only
 # Environment: COULOMB_BENCH_MESHES, COULOMB_BUILD_DIR, COULOMB_EXE (see scripts/bench).
 # Build first: cmake -S . -B build && cmake --build build -j2
@@ -82,7 +83,7 @@ def show(title, rows):
         print("  ".join(s.rjust(w[i]) for i, s in enumerate(t)))
         if j == 0: print("  ".join("-" * x for x in w))
     print()
-show("every run (* = disturbed: other processes used > 10 % of the wall time)", rows)
+show("every run (* = disturbed: other processes used > max(0.3 s, 10 % of the wall time) of CPU)", rows)
 groups = {}
 for r in rows: groups.setdefault((r.get("ref"), r.get("np"), r.get("material")), []).append(r)
 if any(len(g) > 1 for g in groups.values()):

@@ -12,8 +12,8 @@
 namespace coulomb::solver {
 
 /// @brief The defaults: Belos Pseudo Block CG preconditioned by MueLu
-/// (plain aggregation with rigid-body modes, symmetric Gauss-Seidel
-/// smoothing, coarsest level gathered on one rank and factored by KLU2,
+/// (plain aggregation with rigid-body modes, Chebyshev smoothing,
+/// coarsest level gathered on one rank and factored by KLU2,
 /// which is wrong when distributed in Debian's 13.2).
 /// Below 5000 DoFs the preconditioner is Ifpack2 symmetric Gauss-Seidel
 /// instead (tiny hierarchies are fragile, see the .cpp).
