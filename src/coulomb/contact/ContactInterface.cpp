@@ -1,0 +1,176 @@
+/// @file ContactInterface.cpp
+/// @brief Faces and nodes of a slave/master side-set pair; gather of their
+/// current coordinates (see the header).
+#include "coulomb/contact/ContactInterface.hpp"
+
+#include <algorithm>
+#include <set>
+#include <utility>
+
+#include <Teuchos_OrdinalTraits.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "coulomb/core/Error.hpp"
+#include "coulomb/fem/FaceTopology.hpp"
+
+namespace coulomb::contact {
+namespace {
+
+/// Faces of one side set, duplicates (same element and side) removed.
+std::vector<ContactFace> collectFaces(const mesh::Mesh& mesh, const mesh::SideSet& set, const std::string& shown,
+                                      const std::string& role, const std::string& what) {
+  const mesh::GlobalMesh& global = mesh.global();
+  std::vector<ContactFace> faces;
+  std::set<std::pair<long long, int>> seen;
+  for (std::size_t i = 0; i < set.elements.size(); ++i) {
+    ContactFace face;
+    face.element = set.elements[i];
+    face.side = set.sides[i];
+    COULOMB_REQUIRE(face.element >= 0 && face.element < global.numElements(),
+                    what << ": " << role << " side set '" << shown << "' refers to element " << face.element + 1
+                         << ", which the mesh does not have (it has " << global.numElements() << ")");
+    if (!seen.insert({face.element, face.side}).second) continue;
+    const std::size_t b = mesh.blockOfElement(face.element);
+    const mesh::ElementBlock& block = global.blocks[b];
+    std::array<int, 4> local{};
+    try {
+      face.type = fem::faceType(block.cellType, face.side);
+      face.numNodes = fem::faceLocalNodes(block.cellType, face.side, local);
+    } catch (const Error& e) {
+      throw Error(what + ": " + role + " side set '" + shown + "', element " + std::to_string(face.element + 1) +
+                  ": " + e.what());
+    }
+    const int perElement = mesh::numNodes(block.cellType);
+    const long long offset = (face.element - block.firstElement) * perElement;
+    for (int a = 0; a < face.numNodes; ++a) face.nodes[a] = block.connectivity[offset + local[a]];
+    face.owner = mesh.elementOwner(face.element);
+    faces.push_back(face);
+  }
+  COULOMB_REQUIRE(!faces.empty(), what << ": " << role << " side set '" << shown << "' is empty");
+  return faces;
+}
+
+std::vector<long long> uniqueNodes(const std::vector<ContactFace>& a, const std::vector<ContactFace>* b) {
+  std::vector<long long> nodes;
+  for (const auto* faces : {&a, b}) {
+    if (!faces) continue;
+    for (const ContactFace& f : *faces) nodes.insert(nodes.end(), f.nodes.begin(), f.nodes.begin() + f.numNodes);
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+int indexIn(const std::vector<long long>& sorted, long long value) {
+  const auto it = std::lower_bound(sorted.begin(), sorted.end(), value);
+  return (it != sorted.end() && *it == value) ? static_cast<int>(it - sorted.begin()) : -1;
+}
+
+}  // namespace
+
+ContactInterface::ContactInterface(const mesh::Mesh& mesh, const std::string& slaveSet,
+                                   const std::string& masterSet, const std::string& what)
+    : dimension_(mesh.dimension()), comm_(mesh.comm()) {
+  const mesh::GlobalMesh& global = mesh.global();
+  const std::size_t slaveIndex = mesh.sideSetIndex(slaveSet, what + " (slave side set)");
+  const std::size_t masterIndex = mesh.sideSetIndex(masterSet, what + " (master side set)");
+  const mesh::SideSet& slave = global.sideSets[slaveIndex];
+  const mesh::SideSet& master = global.sideSets[masterIndex];
+  slaveName_ = mesh::displayName(slave.name, "sideset", slave.id);
+  masterName_ = mesh::displayName(master.name, "sideset", master.id);
+  COULOMB_REQUIRE(slaveIndex != masterIndex, what << ": slave side set '" << slaveSet << "' and master side set '"
+                                                  << masterSet << "' are the same set ('" << slaveName_
+                                                  << "'); contact needs two different surfaces");
+
+  slaveFaces_ = collectFaces(mesh, slave, slaveName_, "slave", what);
+  masterFaces_ = collectFaces(mesh, master, masterName_, "master", what);
+  {
+    std::set<std::pair<long long, int>> slaveSides;
+    for (const ContactFace& f : slaveFaces_) slaveSides.insert({f.element, f.side});
+    for (const ContactFace& f : masterFaces_)
+      COULOMB_REQUIRE(!slaveSides.count({f.element, f.side}),
+                      what << ": side " << f.side + 1 << " of element " << f.element + 1 << " is in both the slave side set '"
+                           << slaveName_ << "' and the master side set '" << masterName_ << "'");
+  }
+
+  slaveNodes_ = uniqueNodes(slaveFaces_, nullptr);
+  interfaceNodes_ = uniqueNodes(slaveFaces_, &masterFaces_);
+  for (auto* faces : {&slaveFaces_, &masterFaces_})
+    for (ContactFace& f : *faces)
+      for (int a = 0; a < f.numNodes; ++a) f.interfaceIndex[a] = indexIn(interfaceNodes_, f.nodes[a]);
+
+  referenceCoordinates_.resize(interfaceNodes_.size() * dimension_);
+  for (std::size_t i = 0; i < interfaceNodes_.size(); ++i)
+    for (int c = 0; c < dimension_; ++c)
+      referenceCoordinates_[i * dimension_ + c] = global.coordinates[interfaceNodes_[i] * dimension_ + c];
+
+  // Slave node -> slave faces (CSR), with the node's corner in each face.
+  const std::size_t numSlaveNodes = slaveNodes_.size();
+  nodeFaceOffset_.assign(numSlaveNodes + 1, 0);
+  for (const ContactFace& f : slaveFaces_)
+    for (int a = 0; a < f.numNodes; ++a) ++nodeFaceOffset_[indexIn(slaveNodes_, f.nodes[a]) + 1];
+  for (std::size_t i = 0; i < numSlaveNodes; ++i) nodeFaceOffset_[i + 1] += nodeFaceOffset_[i];
+  nodeFaces_.resize(nodeFaceOffset_.back());
+  nodeFaceCorner_.resize(nodeFaceOffset_.back());
+  std::vector<int> fill(nodeFaceOffset_.begin(), nodeFaceOffset_.end() - 1);
+  for (std::size_t k = 0; k < slaveFaces_.size(); ++k)
+    for (int a = 0; a < slaveFaces_[k].numNodes; ++a) {
+      const int slot = fill[indexIn(slaveNodes_, slaveFaces_[k].nodes[a])]++;
+      nodeFaces_[slot] = static_cast<int>(k);
+      nodeFaceCorner_[slot] = a;
+    }
+
+  const int rank = comm_->getRank();
+  std::vector<char> nodeOfOwnedFace(numSlaveNodes, 0);
+  for (std::size_t k = 0; k < slaveFaces_.size(); ++k)
+    if (slaveFaces_[k].owner == rank) {
+      ownedSlaveFaces_.push_back(static_cast<int>(k));
+      for (int a = 0; a < slaveFaces_[k].numNodes; ++a) nodeOfOwnedFace[indexIn(slaveNodes_, slaveFaces_[k].nodes[a])] = 1;
+    }
+  for (std::size_t k = 0; k < masterFaces_.size(); ++k)
+    if (masterFaces_[k].owner == rank) ownedMasterFaces_.push_back(static_cast<int>(k));
+  for (std::size_t i = 0; i < numSlaveNodes; ++i) {
+    if (mesh.nodeOwner(slaveNodes_[i]) == rank) ownedSlaveNodes_.push_back(static_cast<int>(i));
+    if (nodeOfOwnedFace[i]) slaveNodesOfOwnedFaces_.push_back(static_cast<int>(i));
+  }
+}
+
+int ContactInterface::slaveNodeIndex(long long globalNode) const { return indexIn(slaveNodes_, globalNode); }
+
+int ContactInterface::interfaceNodeIndex(long long globalNode) const { return indexIn(interfaceNodes_, globalNode); }
+
+InterfaceConfiguration referenceConfiguration(const ContactInterface& contact) {
+  InterfaceConfiguration config;
+  config.dimension = contact.dimension();
+  config.x = contact.referenceCoordinates();
+  return config;
+}
+
+InterfaceGather::InterfaceGather(const ContactInterface& contact, const Teuchos::RCP<const Map>& ownedDofMap)
+    : contact_(contact) {
+  const int dim = contact.dimension();
+  const auto& nodes = contact.interfaceNodes();
+  std::vector<GlobalOrdinal> gids(nodes.size() * dim);
+  for (std::size_t i = 0; i < nodes.size(); ++i)
+    for (int c = 0; c < dim; ++c) gids[i * dim + c] = static_cast<GlobalOrdinal>(nodes[i]) * dim + c;
+  // Every rank lists every interface DoF: an overlapping ("replicated") target map.
+  replicatedMap_ = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                        Teuchos::ArrayView<const GlobalOrdinal>(gids.data(), gids.size()),
+                                        ownedDofMap->getIndexBase(), ownedDofMap->getComm()));
+  import_ = Teuchos::rcp(new Import(ownedDofMap, replicatedMap_));
+}
+
+InterfaceGather::~InterfaceGather() = default;
+
+InterfaceConfiguration InterfaceGather::gather(const Vector& ownedDisplacement) const {
+  Vector replicated(replicatedMap_);
+  replicated.doImport(ownedDisplacement, *import_, Tpetra::INSERT);
+  InterfaceConfiguration config = referenceConfiguration(contact_);
+  const auto u = replicated.getData(0);
+  for (std::size_t i = 0; i < config.x.size(); ++i) config.x[i] += u[i];
+  return config;
+}
+
+}  // namespace coulomb::contact

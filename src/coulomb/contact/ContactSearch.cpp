@@ -1,0 +1,134 @@
+/// @file ContactSearch.cpp
+/// @brief Bounding-box R-tree search of candidate contact pairs (see the header).
+#include "coulomb/contact/ContactSearch.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <utility>
+
+#include <boost/geometry/geometries/box.hpp>
+#include <boost/geometry/geometries/point.hpp>
+#include <boost/geometry/index/rtree.hpp>
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include "coulomb/core/Error.hpp"
+
+namespace coulomb::contact {
+namespace {
+
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
+using Point = bg::model::point<double, 3, bg::cs::cartesian>;
+using Box = bg::model::box<Point>;
+using Entry = std::pair<Box, int>;
+
+/// Bounding box of a face enlarged by `margin` on every side (2D: z = 0);
+/// false if a coordinate is not finite.
+bool enlargedBox(const ContactFace& face, const InterfaceConfiguration& x, double margin, Box& box) {
+  const int dim = x.dimension;
+  double lo[3] = {0.0, 0.0, 0.0}, hi[3] = {0.0, 0.0, 0.0};
+  for (int c = 0; c < dim; ++c) lo[c] = hi[c] = x.point(face.interfaceIndex[0])[c];
+  for (int a = 0; a < face.numNodes; ++a) {
+    const double* p = x.point(face.interfaceIndex[a]);
+    for (int c = 0; c < dim; ++c) {
+      if (!std::isfinite(p[c])) return false;
+      lo[c] = std::min(lo[c], p[c]);
+      hi[c] = std::max(hi[c], p[c]);
+    }
+  }
+  for (int c = 0; c < dim; ++c) {
+    lo[c] -= margin;
+    hi[c] += margin;
+  }
+  box = Box(Point(lo[0], lo[1], lo[2]), Point(hi[0], hi[1], hi[2]));
+  return true;
+}
+
+void requireRadius(double value, const char* what) {
+  COULOMB_REQUIRE(std::isfinite(value) && value >= 0.0,
+                  "contact search: the " << what << " must be finite and >= 0, got " << value);
+}
+
+}  // namespace
+
+double defaultSearchRadius(const ContactInterface& contact, const InterfaceConfiguration& x, double factor) {
+  requireRadius(factor, "search radius factor");
+  const int dim = x.dimension;
+  double diameter = 0.0;
+  for (const ContactFace& face : contact.slaveFaces())
+    for (int a = 0; a < face.numNodes; ++a)
+      for (int b = a + 1; b < face.numNodes; ++b) {
+        const double* p = x.point(face.interfaceIndex[a]);
+        const double* q = x.point(face.interfaceIndex[b]);
+        double d2 = 0.0;
+        for (int c = 0; c < dim; ++c) d2 += (p[c] - q[c]) * (p[c] - q[c]);
+        if (std::isfinite(d2)) diameter = std::max(diameter, std::sqrt(d2));
+      }
+  return factor * diameter;
+}
+
+long long SearchResult::numLocalPairs() const {
+  long long n = 0;
+  for (const auto& c : candidates) n += static_cast<long long>(c.size());
+  return n;
+}
+
+SearchResult searchContactPairs(const ContactInterface& contact, const InterfaceConfiguration& x, double radius) {
+  return searchContactPairs(contact, x, radius, contact.ownedSlaveFaces());
+}
+
+SearchResult searchContactPairs(const ContactInterface& contact, const InterfaceConfiguration& x, double radius,
+                                const std::vector<int>& slaveFaces) {
+  requireRadius(radius, "search radius");
+  COULOMB_REQUIRE(x.dimension == contact.dimension() &&
+                      x.x.size() == contact.interfaceNodes().size() * static_cast<std::size_t>(x.dimension),
+                  "internal: interface configuration does not match the contact interface");
+  const double margin = 0.5 * radius;
+  SearchResult result;
+  result.radius = radius;
+  result.slaveFaces = slaveFaces;
+  result.candidates.resize(slaveFaces.size());
+
+  const auto& masters = contact.masterFaces();
+  std::vector<Entry> entries;
+  entries.reserve(masters.size());
+  for (std::size_t m = 0; m < masters.size(); ++m) {
+    Box box;
+    if (enlargedBox(masters[m], x, margin, box))
+      entries.emplace_back(box, static_cast<int>(m));
+    else
+      ++result.skippedFaces;
+  }
+  // Range constructor: bulk loading by packing (better tree than insertion).
+  const bgi::rtree<Entry, bgi::rstar<16>> tree(entries.begin(), entries.end());
+
+  const auto& slaves = contact.slaveFaces();
+  std::vector<Entry> hits;
+  for (std::size_t k = 0; k < slaveFaces.size(); ++k) {
+    const int s = slaveFaces[k];
+    COULOMB_REQUIRE(s >= 0 && static_cast<std::size_t>(s) < slaves.size(), "internal: slave face index " << s);
+    Box box;
+    if (!enlargedBox(slaves[s], x, margin, box)) {
+      ++result.skippedFaces;
+      continue;
+    }
+    hits.clear();
+    tree.query(bgi::intersects(box), std::back_inserter(hits));
+    std::vector<int>& found = result.candidates[k];
+    found.reserve(hits.size());
+    for (const Entry& hit : hits) found.push_back(hit.second);
+    std::sort(found.begin(), found.end());
+  }
+  return result;
+}
+
+long long globalPairCount(const SearchResult& result, const Teuchos::Comm<int>& comm) {
+  const long long local = result.numLocalPairs();
+  long long total = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, local, Teuchos::outArg(total));
+  return total;
+}
+
+}  // namespace coulomb::contact
