@@ -1,0 +1,380 @@
+/// @file MortarPass.cpp
+/// @brief Nodal mortar quantities from the segment kernels (see the header).
+///
+/// Cross-rank summation (sumToOwners):
+///  1. owner of every slave node: each rank marks its owned slave nodes
+///     (ContactInterface::ownedSlaveNodes()) with its rank, -1 elsewhere; one
+///     Teuchos::reduceAll(MAX) over the slave-node vector gives every rank the
+///     full owner table (O(slave nodes), replicated like the interface itself);
+///  2. every local entry is packed into a flat buffer of doubles for its owner
+///     (global node numbers are stored as doubles: exact below 2^53);
+///  3. MPI_Alltoall of the buffer sizes, then MPI_Alltoallv of the buffers;
+///  4. the owner unpacks the buffers in rank order (its own included) and adds
+///     entries with the same node (NodalMortarEntry::add), so the summation order
+///     is fixed for a given rank count.
+/// Packed entry: node, D, gap, #M, (l, M_jl)..., dD row, dGap row, #dM,
+/// (l, dM row)...; a row is #entries, (node, component, value)....
+#include "coulomb/contact/MortarPass.hpp"
+
+#include <mpi.h>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <algorithm>
+#include <ostream>
+
+#include "coulomb/contact/MortarSegment2D.hpp"
+#include "coulomb/contact/MortarSegment3D.hpp"
+#include "coulomb/core/Error.hpp"
+
+namespace coulomb::contact {
+
+// ------------------------------------------------------------------ entries
+
+namespace {
+
+void addRow(DerivativeRow& to, const DerivativeRow& from) {
+  for (const auto& [key, value] : from) to[key] += value;
+}
+
+}  // namespace
+
+void NodalMortarEntry::add(const NodalMortarEntry& other) {
+  COULOMB_REQUIRE(node == other.node, "internal: adding mortar entries of different nodes");
+  D += other.D;
+  gap += other.gap;
+  for (const auto& [l, value] : other.M) M[l] += value;
+  addRow(dD, other.dD);
+  addRow(dGap, other.dGap);
+  for (const auto& [l, row] : other.dM) addRow(dM[l], row);
+}
+
+bool NodalMortarEntry::operator==(const NodalMortarEntry& o) const {
+  return node == o.node && D == o.D && gap == o.gap && M == o.M && dD == o.dD && dGap == o.dGap && dM == o.dM;
+}
+
+const NodalMortarEntry* NodalMortarQuantities::find(long long node) const {
+  const auto it = std::lower_bound(entries.begin(), entries.end(), node,
+                                   [](const NodalMortarEntry& e, long long n) { return e.node < n; });
+  return it != entries.end() && it->node == node ? &*it : nullptr;
+}
+
+namespace {
+
+void printRow(std::ostream& out, const char* name, const DerivativeRow& row) {
+  out << "    " << name << ":";
+  for (const auto& [key, value] : row) out << " (" << key.first << "," << key.second << ")=" << value;
+  out << "\n";
+}
+
+}  // namespace
+
+std::ostream& operator<<(std::ostream& out, const NodalMortarEntry& e) {
+  out << "  node " << e.node << ": D = " << e.D << ", gap = " << e.gap << ", M =";
+  for (const auto& [l, value] : e.M) out << " [" << l << "]=" << value;
+  out << "\n";
+  if (!e.dD.empty()) printRow(out, "dD", e.dD);
+  if (!e.dGap.empty()) printRow(out, "dGap", e.dGap);
+  for (const auto& [l, row] : e.dM) {
+    const std::string name = "dM[" + std::to_string(l) + "]";
+    printRow(out, name.c_str(), row);
+  }
+  return out;
+}
+
+std::ostream& operator<<(std::ostream& out, const NodalMortarQuantities& q) {
+  out << "NodalMortarQuantities (" << q.dimension << "D, " << q.entries.size() << " slave nodes"
+      << (q.withDerivatives ? ", with derivatives" : "") << ")\n";
+  for (const auto& e : q.entries) out << e;
+  return out;
+}
+
+// --------------------------------------------------------------------- pass
+
+namespace {
+
+using mesh::FaceType;
+
+/// Chain rule of one pair: for each kernel input i, the (dof, weight) terms of
+/// d input_i / d x.
+using InputChain = std::vector<std::vector<std::pair<DofKey, double>>>;
+
+InputChain buildChain(int dim, const ContactFace& slave, const ContactFace& master,
+                      const ContactInterface& contact, const std::vector<NodalNormal>& normals) {
+  const int nS = slave.numNodes, nM = master.numNodes;
+  InputChain chain(static_cast<std::size_t>(dim * (2 * nS + nM)));
+  for (int a = 0; a < nS; ++a) {
+    for (int c = 0; c < dim; ++c) chain[a * dim + c].push_back({{slave.nodes[a], c}, 1.0});
+    const NodalNormal& n = normals[contact.slaveNodeIndex(slave.nodes[a])];
+    COULOMB_REQUIRE(!n.derivative.empty(), "internal: mortar pass needs the normal derivative at node " +
+                                               std::to_string(slave.nodes[a] + 1));
+    for (int k = 0; k < dim; ++k)
+      for (const NormalDerivative& d : n.derivative)
+        chain[dim * nS + a * dim + k].push_back({{d.node, d.component}, d.dn[k]});
+  }
+  for (int l = 0; l < nM; ++l)
+    for (int c = 0; c < dim; ++c) chain[dim * 2 * nS + l * dim + c].push_back({{master.nodes[l], c}, 1.0});
+  return chain;
+}
+
+template <std::size_t N>
+void chainRow(const std::array<double, N>& dq, const InputChain& chain, DerivativeRow& row) {
+  for (std::size_t i = 0; i < N; ++i) {
+    if (dq[i] == 0.0) continue;
+    for (const auto& [key, weight] : chain[i]) row[key] += dq[i] * weight;
+  }
+}
+
+/// Adds the values (and derivatives, if `lin`) of one pair to the nodal entries.
+/// Value: a MortarSegment2D<double> or MortarSegment3D<S, M, double>; Lin: the
+/// matching linearization (or nullptr).
+template <typename Value, typename Lin>
+void accumulate(const Value& value, const Lin* lin, const InputChain* chain, const ContactFace& slave,
+                const ContactFace& master, std::map<long long, NodalMortarEntry>& out) {
+  const int nS = slave.numNodes, nM = master.numNodes;
+  for (int j = 0; j < nS; ++j) {
+    NodalMortarEntry& e = out[slave.nodes[j]];
+    e.node = slave.nodes[j];
+    e.D += value.D[j];
+    e.gap += value.gap[j];
+    for (int l = 0; l < nM; ++l) e.M[master.nodes[l]] += value.M[j][l];
+    if (lin) {
+      chainRow(lin->dD[j], *chain, e.dD);
+      chainRow(lin->dGap[j], *chain, e.dGap);
+      for (int l = 0; l < nM; ++l) chainRow(lin->dM[j][l], *chain, e.dM[master.nodes[l]]);
+    }
+  }
+}
+
+template <FaceType F>
+FaceNodes<F, double> faceCoordinates(const ContactFace& f, const InterfaceConfiguration& x) {
+  FaceNodes<F, double> out{};
+  for (int a = 0; a < FaceTraits<F>::nodes; ++a)
+    for (int c = 0; c < FaceTraits<F>::spaceDim; ++c) out[a][c] = x.point(f.interfaceIndex[a])[c];
+  return out;
+}
+
+template <FaceType F>
+FaceNodes<F, double> faceNormals(const ContactFace& f, const ContactInterface& contact,
+                                 const std::vector<NodalNormal>& normals) {
+  FaceNodes<F, double> out{};
+  for (int a = 0; a < FaceTraits<F>::nodes; ++a) {
+    const int i = contact.slaveNodeIndex(f.nodes[a]);
+    COULOMB_REQUIRE(i >= 0, "internal: slave face node is no slave node");
+    for (int c = 0; c < FaceTraits<F>::spaceDim; ++c) out[a][c] = normals[i].n[c];
+  }
+  return out;
+}
+
+struct PairContext {
+  const ContactInterface& contact;
+  const InterfaceConfiguration& x;
+  const std::vector<NodalNormal>& normals;
+  bool withDerivatives;
+  double tolerance;
+  std::map<long long, NodalMortarEntry>& out;
+};
+
+void pair2D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
+  using F = std::integral_constant<FaceType, FaceType::Line2>;
+  const auto xs = faceCoordinates<F::value>(s, p.x);
+  const auto ns = faceNormals<F::value>(s, p.contact, p.normals);
+  const auto xm = faceCoordinates<F::value>(m, p.x);
+  if (p.withDerivatives) {
+    const MortarSegment2DLinearization lin = linearizeSegment2D(xs, ns, xm, p.tolerance);
+    if (!lin.value.contributes) return;
+    const InputChain chain = buildChain(2, s, m, p.contact, p.normals);
+    accumulate(lin.value, &lin, &chain, s, m, p.out);
+  } else {
+    const MortarSegment2D<double> value = integrateSegment2D<double>(xs, ns, xm, p.tolerance);
+    if (!value.contributes) return;
+    accumulate(value, static_cast<const MortarSegment2DLinearization*>(nullptr), nullptr, s, m, p.out);
+  }
+}
+
+template <FaceType S, FaceType Mf>
+void pair3D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
+  const auto xs = faceCoordinates<S>(s, p.x);
+  const auto ns = faceNormals<S>(s, p.contact, p.normals);
+  const auto xm = faceCoordinates<Mf>(m, p.x);
+  if (p.withDerivatives) {
+    const auto lin = linearizeSegment3D<S, Mf>(xs, ns, xm, p.tolerance);
+    if (!lin.value.contributes) return;
+    const InputChain chain = buildChain(3, s, m, p.contact, p.normals);
+    accumulate(lin.value, &lin, &chain, s, m, p.out);
+  } else {
+    const auto value = integrateSegment3D<S, Mf, double>(xs, ns, xm, p.tolerance);
+    if (!value.contributes) return;
+    accumulate(value, static_cast<const MortarSegment3DLinearization<S, Mf>*>(nullptr), nullptr, s, m, p.out);
+  }
+}
+
+void integratePair(const PairContext& p, const ContactFace& s, const ContactFace& m) {
+  if (p.contact.dimension() == 2) return pair2D(p, s, m);
+  const bool sTri = s.type == FaceType::Tri3, mTri = m.type == FaceType::Tri3;
+  if (sTri && mTri) return pair3D<FaceType::Tri3, FaceType::Tri3>(p, s, m);
+  if (sTri) return pair3D<FaceType::Tri3, FaceType::Quad4>(p, s, m);
+  if (mTri) return pair3D<FaceType::Quad4, FaceType::Tri3>(p, s, m);
+  return pair3D<FaceType::Quad4, FaceType::Quad4>(p, s, m);
+}
+
+}  // namespace
+
+NodalMortarQuantities integrateMortarPass(const ContactInterface& contact, const InterfaceConfiguration& x,
+                                          const std::vector<NodalNormal>& normals, const SearchResult& pairs,
+                                          bool withDerivatives, double relativeTolerance) {
+  COULOMB_REQUIRE(normals.size() == contact.slaveNodes().size(),
+                  "internal: mortar pass needs one nodal normal per slave node");
+  COULOMB_REQUIRE(x.dimension == contact.dimension(), "internal: configuration dimension mismatch");
+  std::map<long long, NodalMortarEntry> out;
+  const PairContext context{contact, x, normals, withDerivatives, relativeTolerance, out};
+  for (std::size_t k = 0; k < pairs.slaveFaces.size(); ++k) {
+    const ContactFace& s = contact.slaveFaces()[pairs.slaveFaces[k]];
+    for (int m : pairs.candidates[k]) integratePair(context, s, contact.masterFaces()[m]);
+  }
+  NodalMortarQuantities result;
+  result.dimension = contact.dimension();
+  result.withDerivatives = withDerivatives;
+  result.entries.reserve(out.size());
+  for (auto& [node, entry] : out) result.entries.push_back(std::move(entry));
+  return result;
+}
+
+// ------------------------------------------------------------ summation
+
+namespace {
+
+void packRow(std::vector<double>& b, const DerivativeRow& row) {
+  b.push_back(static_cast<double>(row.size()));
+  for (const auto& [key, value] : row) {
+    b.push_back(static_cast<double>(key.first));
+    b.push_back(key.second);
+    b.push_back(value);
+  }
+}
+
+void pack(std::vector<double>& b, const NodalMortarEntry& e) {
+  b.push_back(static_cast<double>(e.node));
+  b.push_back(e.D);
+  b.push_back(e.gap);
+  b.push_back(static_cast<double>(e.M.size()));
+  for (const auto& [l, value] : e.M) {
+    b.push_back(static_cast<double>(l));
+    b.push_back(value);
+  }
+  packRow(b, e.dD);
+  packRow(b, e.dGap);
+  b.push_back(static_cast<double>(e.dM.size()));
+  for (const auto& [l, row] : e.dM) {
+    b.push_back(static_cast<double>(l));
+    packRow(b, row);
+  }
+}
+
+struct Reader {
+  const double* p;
+  long long nextInt() { return static_cast<long long>(*p++); }
+  double next() { return *p++; }
+};
+
+DerivativeRow unpackRow(Reader& r) {
+  DerivativeRow row;
+  const long long n = r.nextInt();
+  for (long long i = 0; i < n; ++i) {
+    const long long node = r.nextInt();
+    const int component = static_cast<int>(r.nextInt());
+    row.emplace_hint(row.end(), DofKey{node, component}, r.next());
+  }
+  return row;
+}
+
+NodalMortarEntry unpack(Reader& r) {
+  NodalMortarEntry e;
+  e.node = r.nextInt();
+  e.D = r.next();
+  e.gap = r.next();
+  const long long nM = r.nextInt();
+  for (long long i = 0; i < nM; ++i) {
+    const long long l = r.nextInt();
+    e.M.emplace_hint(e.M.end(), l, r.next());
+  }
+  e.dD = unpackRow(r);
+  e.dGap = unpackRow(r);
+  const long long ndM = r.nextInt();
+  for (long long i = 0; i < ndM; ++i) {
+    const long long l = r.nextInt();
+    e.dM.emplace_hint(e.dM.end(), l, unpackRow(r));
+  }
+  return e;
+}
+
+}  // namespace
+
+NodalMortarQuantities sumToOwners(const ContactInterface& contact, const NodalMortarQuantities& local) {
+  const Teuchos::Comm<int>& comm = *contact.comm();
+  const int size = comm.getSize(), rank = comm.getRank();
+  NodalMortarQuantities result;
+  result.dimension = local.dimension;
+  result.withDerivatives = local.withDerivatives;
+
+  // 1. owner table of the slave nodes
+  const std::size_t numSlave = contact.slaveNodes().size();
+  std::vector<int> mine(numSlave, -1), owner(numSlave, -1);
+  for (int i : contact.ownedSlaveNodes()) mine[i] = rank;
+  if (size > 1)
+    Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, static_cast<int>(numSlave), mine.data(), owner.data());
+  else
+    owner = mine;
+
+  // 2. pack per destination
+  std::vector<std::vector<double>> send(static_cast<std::size_t>(size));
+  for (const NodalMortarEntry& e : local.entries) {
+    const int i = contact.slaveNodeIndex(e.node);
+    COULOMB_REQUIRE(i >= 0 && owner[i] >= 0, "internal: mortar entry of node " + std::to_string(e.node + 1) +
+                                                 " without an owning rank");
+    pack(send[owner[i]], e);
+  }
+
+  // 3. exchange
+  std::vector<double> received;
+  std::vector<int> recvCounts(size, 0), recvOffsets(size + 1, 0);
+  if (size == 1) {
+    received = std::move(send[0]);
+    recvOffsets[1] = static_cast<int>(received.size());
+  } else {
+    const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
+    COULOMB_REQUIRE(mpi != nullptr, "internal: sumToOwners needs an MPI Teuchos communicator");
+    const MPI_Comm raw = *mpi->getRawMpiComm();
+    std::vector<int> sendCounts(size), sendOffsets(size + 1, 0);
+    std::vector<double> flat;
+    for (int r = 0; r < size; ++r) {
+      COULOMB_REQUIRE(send[r].size() < static_cast<std::size_t>(1) << 30, "internal: mortar buffer too large");
+      sendCounts[r] = static_cast<int>(send[r].size());
+      sendOffsets[r + 1] = sendOffsets[r] + sendCounts[r];
+      flat.insert(flat.end(), send[r].begin(), send[r].end());
+    }
+    MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, raw);
+    for (int r = 0; r < size; ++r) recvOffsets[r + 1] = recvOffsets[r] + recvCounts[r];
+    received.resize(static_cast<std::size_t>(recvOffsets[size]));
+    MPI_Alltoallv(flat.data(), sendCounts.data(), sendOffsets.data(), MPI_DOUBLE, received.data(),
+                  recvCounts.data(), recvOffsets.data(), MPI_DOUBLE, raw);
+  }
+
+  // 4. unpack in rank order and sum
+  std::map<long long, NodalMortarEntry> sum;
+  Reader reader{received.data()};
+  const double* end = received.data() + received.size();
+  while (reader.p < end) {
+    NodalMortarEntry e = unpack(reader);
+    auto it = sum.find(e.node);
+    if (it == sum.end())
+      sum.emplace(e.node, std::move(e));
+    else
+      it->second.add(e);
+  }
+  result.entries.reserve(sum.size());
+  for (auto& [node, entry] : sum) result.entries.push_back(std::move(entry));
+  return result;
+}
+
+}  // namespace coulomb::contact
