@@ -1,0 +1,78 @@
+#pragma once
+/// @file ActiveSet.hpp
+/// @brief Contact state of one slave node and the active-set update rule of the
+/// augmented Lagrangian (ALM) and penalty formulations, frictionless part.
+///
+/// Conventions (see NodalContactLaw.hpp for the full derivation):
+///  * g~_j is the weighted gap of MortarPass (g~ = -n.(D x^1 - M x^2), > 0 open),
+///    D_j the diagonal dual-mortar entry; g_j = g~_j / D_j is the nodal
+///    (pointwise) gap, a length.
+///  * lambda_j is the nodal coefficient of the multiplier field
+///    lambda_h = sum_j Phi_j lambda_j: a traction (NOT weighted by area). The
+///    physical contact traction on the slave is k lambda_j, the nodal contact
+///    force on the slave is k D_j lambda_j (the weighted, pressure × area,
+///    quantity), lambda_n = n_j.lambda_j <= 0 in compression (seed 4.60a), and
+///    the contact pressure written to output is p_j = -k lambda_n (>= 0 in
+///    compression) = -(n.(k D_j lambda_j)) / D_j.
+///  * eps_n is a physical penalty (pressure per length, e.g. defaultPenalty).
+///    With the nodal penalty eps^_j = eps_n / D_j the seed's nodal formulas
+///    (4.72b, 4.74) hold literally with weighted gaps: k lambda_n + eps^_j g~_j.
+///
+/// Update rule (seed 4.73/4.74, ALM): augmented normal multiplier
+///   lambdā_n = k n.lambda + eps_n g~_j / D_j ;  active iff lambdā_n <= 0.
+/// The contact zone is lambdā_n <= 0 as in (4.60a); (4.73) writes the active set
+/// with a strict "< 0": the two differ only at lambdā_n = 0 exactly, where both
+/// branches of the residual agree (NodalContactLaw.hpp), so the choice is
+/// immaterial for the solution; we follow (4.60a).
+/// Penalty (4.74): threshold eps_n g~_j, active iff g~_j <= 0.
+#include <cstddef>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace coulomb::contact {
+
+/// @brief Contact state of one slave node (Slip/Stick to come with friction).
+enum class ContactState : int { Inactive = 0, Active = 1 };
+
+/// "Inactive" / "Active".
+const char* toString(ContactState state);
+std::ostream& operator<<(std::ostream& out, ContactState state);
+
+/// @brief Augmented normal multiplier lambdā_n = k lambda_n + eps_n g~ / D (seed 4.59, 4.74).
+/// Requires D > 0.
+double augmentedNormalMultiplier(double lambdaN, double weightedGap, double D, double k, double epsN);
+
+/// @brief ALM update rule (4.73/4.74): Active iff lambdā_n <= 0.
+ContactState almContactState(double lambdaN, double weightedGap, double D, double k, double epsN);
+
+/// @brief Penalty update rule (4.74): Active iff g~ <= 0 (threshold eps_n g~).
+ContactState penaltyContactState(double weightedGap);
+
+/// @brief Per-interface summary of an active set.
+struct ActiveSetSummary {
+  std::size_t nodes = 0;     ///< number of slave nodes
+  std::size_t active = 0;    ///< nodes in the Active state
+  std::size_t inactive = 0;  ///< nodes in the Inactive state
+  std::size_t changed = 0;   ///< nodes whose state differs from the previous set
+  /// Converged active set (Algorithm, line 19): no node changed.
+  bool unchanged() const { return changed == 0; }
+  bool operator==(const ActiveSetSummary& other) const {
+    return nodes == other.nodes && active == other.active && inactive == other.inactive &&
+           changed == other.changed;
+  }
+  bool operator!=(const ActiveSetSummary& other) const { return !(*this == other); }
+  /// Adds the counts of another part (e.g. another rank's nodes).
+  ActiveSetSummary& operator+=(const ActiveSetSummary& other);
+};
+
+/// "nodes 10: active 4, inactive 6, changed 1"
+std::ostream& operator<<(std::ostream& out, const ActiveSetSummary& summary);
+
+/// @brief Summary of `current` against `previous` (same node order). An empty
+/// `previous` counts every node as unchanged; otherwise the sizes must match
+/// (throws coulomb::Error).
+ActiveSetSummary summarizeActiveSet(const std::vector<ContactState>& current,
+                                    const std::vector<ContactState>& previous);
+
+}  // namespace coulomb::contact

@@ -1,0 +1,156 @@
+/// @file NodalContactLaw.cpp
+/// @brief Nodal frictionless ALM and penalty kernels (seed 4.71a, 4.72a/b,
+/// 4.74 with mu = 0); formulas in NodalContactLaw.hpp.
+#include "coulomb/contact/NodalContactLaw.hpp"
+
+#include <algorithm>
+
+#include "coulomb/core/Error.hpp"
+
+namespace coulomb::contact {
+namespace {
+
+void checkParameters(const AlmParameters& p) {
+  COULOMB_REQUIRE(p.k > 0.0, "contact ALM: scale factor k must be > 0, got " << p.k);
+  COULOMB_REQUIRE(p.epsN > 0.0, "contact ALM: normal penalty must be > 0, got " << p.epsN);
+  COULOMB_REQUIRE(p.epsTau > 0.0, "contact ALM: tangential penalty must be > 0, got " << p.epsTau);
+}
+
+template <int dim>
+double dot(const NVec<dim>& a, const NVec<dim>& b) {
+  double s = 0.0;
+  for (int i = 0; i < dim; ++i) s += a[i] * b[i];
+  return s;
+}
+
+}  // namespace
+
+template <int dim>
+AlmNodeResidual<dim> almResidual(const AlmNodeInput<dim>& in, const AlmParameters& p, ContactState state) {
+  checkParameters(p);
+  COULOMB_REQUIRE(in.D > 0.0, "contact ALM: nodal mortar weight D_j must be > 0, got " << in.D);
+  const NVec<dim>& n = in.normal;
+  const NVec<dim>& lam = in.lambda;
+  const double k2 = p.k * p.k;
+  const double cTau = in.D * k2 / p.epsTau;  // tangential coefficient
+  const double cN = in.D * k2 / p.epsN;      // inactive normal coefficient
+  const double ln = dot<dim>(n, lam);
+  AlmNodeResidual<dim> out;
+  // Tangential part (both states): -c_tau P lambda = -c_tau (lambda - (n.lambda) n).
+  //   d/dlambda = -c_tau (I - n n^T);  d/dn = c_tau ((n.lambda) I + n lambda^T);  d/dD = -(k^2/eps_tau) P lambda.
+  for (int i = 0; i < dim; ++i) {
+    const double pl = lam[i] - ln * n[i];
+    out.r[i] = -cTau * pl;
+    out.dD[i] = -(k2 / p.epsTau) * pl;
+    for (int c = 0; c < dim; ++c) {
+      out.dLambda[i][c] = -cTau * ((i == c ? 1.0 : 0.0) - n[i] * n[c]);
+      out.dNormal[i][c] = cTau * ((i == c ? ln : 0.0) + n[i] * lam[c]);
+    }
+  }
+  if (state == ContactState::Active) {
+    // Normal part k g~ n: d/dg~ = k n, d/dn = k g~ I.
+    for (int i = 0; i < dim; ++i) {
+      out.r[i] += p.k * in.gap * n[i];
+      out.dGap[i] = p.k * n[i];
+      out.dNormal[i][i] += p.k * in.gap;
+    }
+  } else {
+    // Normal part -c_n (n.lambda) n: d/dlambda = -c_n n n^T, d/dn = -c_n ((n.lambda) I + n lambda^T),
+    // d/dD = -(k^2/eps_n)(n.lambda) n.
+    for (int i = 0; i < dim; ++i) {
+      out.r[i] += -cN * ln * n[i];
+      out.dD[i] += -(k2 / p.epsN) * ln * n[i];
+      for (int c = 0; c < dim; ++c) {
+        out.dLambda[i][c] += -cN * n[i] * n[c];
+        out.dNormal[i][c] += -cN * ((i == c ? ln : 0.0) + n[i] * lam[c]);
+      }
+    }
+  }
+  return out;
+}
+
+template <int dim>
+ContactState almState(const AlmNodeInput<dim>& in, const AlmParameters& p) {
+  checkParameters(p);
+  return almContactState(dot<dim>(in.normal, in.lambda), in.gap, in.D, p.k, p.epsN);
+}
+
+template <int dim>
+double almPressure(const AlmNodeInput<dim>& in, const AlmParameters& p) {
+  return -p.k * dot<dim>(in.normal, in.lambda);
+}
+
+template <int dim>
+NodalForce<dim> almSlaveForce(const NVec<dim>& lambda, double D, double k) {
+  NodalForce<dim> out;
+  for (int i = 0; i < dim; ++i) {
+    out.f[i] = k * D * lambda[i];
+    out.dLambda[i][i] = k * D;
+    out.dD[i] = k * lambda[i];
+  }
+  return out;
+}
+
+template <int dim>
+NodalForce<dim> almMasterForce(const NVec<dim>& lambda, double Mjl, double k) {
+  NodalForce<dim> out;
+  for (int i = 0; i < dim; ++i) {
+    out.f[i] = -k * Mjl * lambda[i];
+    out.dLambda[i][i] = -k * Mjl;
+    out.dM[i] = -k * lambda[i];
+  }
+  return out;
+}
+
+template <int dim>
+NodalForce<dim> penaltySlaveForce(const NVec<dim>& normal, double gap, double epsN) {
+  COULOMB_REQUIRE(epsN > 0.0, "contact penalty: normal penalty must be > 0, got " << epsN);
+  NodalForce<dim> out;
+  const double pen = std::max(-gap, 0.0);        // <-g~>
+  const double h = gap < 0.0 ? 1.0 : 0.0;        // -d<-g~>/dg~ (taken 0 at g~ = 0)
+  for (int i = 0; i < dim; ++i) {
+    out.f[i] = -epsN * pen * normal[i];
+    out.dGap[i] = epsN * h * normal[i];
+    out.dNormal[i][i] = -epsN * pen;
+  }
+  return out;
+}
+
+template <int dim>
+NodalForce<dim> penaltyMasterForce(const NVec<dim>& normal, double gap, double D, double Mjl, double epsN) {
+  COULOMB_REQUIRE(epsN > 0.0, "contact penalty: normal penalty must be > 0, got " << epsN);
+  COULOMB_REQUIRE(D > 0.0, "contact penalty: nodal mortar weight D_j must be > 0, got " << D);
+  NodalForce<dim> out;
+  const double pen = std::max(-gap, 0.0);
+  const double h = gap < 0.0 ? 1.0 : 0.0;
+  const double ratio = Mjl / D;
+  for (int i = 0; i < dim; ++i) {
+    out.f[i] = epsN * pen * ratio * normal[i];
+    out.dGap[i] = -epsN * h * ratio * normal[i];
+    out.dNormal[i][i] = epsN * pen * ratio;
+    out.dD[i] = -epsN * pen * ratio / D * normal[i];
+    out.dM[i] = epsN * pen / D * normal[i];
+  }
+  return out;
+}
+
+double defaultPenalty(double E, double h, double factor) {
+  COULOMB_REQUIRE(E > 0.0, "contact penalty: Young's modulus must be > 0, got " << E);
+  COULOMB_REQUIRE(h > 0.0, "contact penalty: element size must be > 0, got " << h);
+  COULOMB_REQUIRE(factor > 0.0, "contact penalty: penalty factor must be > 0, got " << factor);
+  return factor * E / h;
+}
+
+#define COULOMB_NODAL_LAW_INSTANTIATE(DIM)                                                                      \
+  template AlmNodeResidual<DIM> almResidual<DIM>(const AlmNodeInput<DIM>&, const AlmParameters&, ContactState); \
+  template ContactState almState<DIM>(const AlmNodeInput<DIM>&, const AlmParameters&);                          \
+  template double almPressure<DIM>(const AlmNodeInput<DIM>&, const AlmParameters&);                             \
+  template NodalForce<DIM> almSlaveForce<DIM>(const NVec<DIM>&, double, double);                                \
+  template NodalForce<DIM> almMasterForce<DIM>(const NVec<DIM>&, double, double);                               \
+  template NodalForce<DIM> penaltySlaveForce<DIM>(const NVec<DIM>&, double, double);                            \
+  template NodalForce<DIM> penaltyMasterForce<DIM>(const NVec<DIM>&, double, double, double, double);
+COULOMB_NODAL_LAW_INSTANTIATE(2)
+COULOMB_NODAL_LAW_INSTANTIATE(3)
+#undef COULOMB_NODAL_LAW_INSTANTIATE
+
+}  // namespace coulomb::contact
