@@ -275,18 +275,20 @@ AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residua
   AssemblyStatus status;
   status.invertedElement = anyRank(*m.mesh.comm(), inverted);
 
-  Vector ownedResidual(m.dofs.ownedMap());
-  ownedResidual.doExport(*m.overlapResidual, *m.overlapToOwned, Tpetra::ADD);
   const auto prescribed = constraints_->ownedConstrainedDofs();
-  if (reactions) {
-    reactions->putScalar(0.0);
-    auto source = ownedResidual.getData(0);
-    auto target = reactions->getDataNonConst(0);
-    for (int dof : prescribed) target[dof] = source[dof];
-  }
-  if (residual) {
-    constraints_->setResidualRows(time, u, ownedResidual);
-    residual->assign(ownedResidual);
+  if (residual || reactions) {  // a tangent-only call (NOX's computeJacobian) needs no residual export
+    Vector ownedResidual(m.dofs.ownedMap());
+    ownedResidual.doExport(*m.overlapResidual, *m.overlapToOwned, Tpetra::ADD);
+    if (reactions) {
+      reactions->putScalar(0.0);
+      auto source = ownedResidual.getData(0);
+      auto target = reactions->getDataNonConst(0);
+      for (int dof : prescribed) target[dof] = source[dof];
+    }
+    if (residual) {
+      constraints_->setResidualRows(time, u, ownedResidual);
+      residual->assign(ownedResidual);
+    }
   }
   if (jacobian) {
     m.overlapMatrix->fillComplete(m.dofs.ownedMap(), m.dofs.ownedMap());
