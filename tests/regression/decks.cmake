@@ -18,3 +18,8 @@ foreach(deck ${COULOMB_DECKS})
     set_tests_properties(Deck.${name}.np${np}_equals_np1 PROPERTIES FIXTURES_REQUIRED "${name}_np1;${name}_np${np}")
   endforeach()
 endforeach()
+
+# `coulomb --help-deck` lists the parameters with their requirements.
+add_test(NAME HelpDeck COMMAND ${COULOMB_EXE} --help-deck)
+set_tests_properties(HelpDeck PROPERTIES
+  PASS_REGULAR_EXPRESSION "Poisson's Ratio : double[^\n]*\n[^\n]*must be in \\(-1, 0.5\\)")
