@@ -2,7 +2,8 @@
 /// @brief Element mass matrices and dual-basis coefficients of slave faces.
 #include "coulomb/contact/DualBasis.hpp"
 
-#include <Sacado.hpp>
+#include "coulomb/contact/MortarScalarTypes.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -168,18 +169,18 @@ NodalMatrix<F, T> dualCoefficients(const FaceNodes<F, T>& x) {
   COULOMB_CONTACT_DUAL_INSTANTIATE(mesh::FaceType::Tri3, T)  \
   COULOMB_CONTACT_DUAL_INSTANTIATE(mesh::FaceType::Quad4, T)
 
-// The scalar types of the mortar kernels (MortarSegment2D.cpp, MortarSegment3D.cpp).
-using Fad12 = Sacado::Fad::SFad<double, 12>;
-using Fad27 = Sacado::Fad::SFad<double, 27>;
-using Fad30 = Sacado::Fad::SFad<double, 30>;
-using Fad33 = Sacado::Fad::SFad<double, 33>;
-using Fad36 = Sacado::Fad::SFad<double, 36>;
+// The scalar types of the mortar kernels (MortarScalarTypes.hpp).
+using mesh::FaceType;
+using Fad3DTriTri = SegmentFad3D<FaceType::Tri3, FaceType::Tri3>;
+using Fad3DTriQuad = SegmentFad3D<FaceType::Tri3, FaceType::Quad4>;
+using Fad3DQuadTri = SegmentFad3D<FaceType::Quad4, FaceType::Tri3>;
+using Fad3DQuadQuad = SegmentFad3D<FaceType::Quad4, FaceType::Quad4>;
 COULOMB_CONTACT_DUAL_ALL_FACES(double)
-COULOMB_CONTACT_DUAL_ALL_FACES(Fad12)
-COULOMB_CONTACT_DUAL_ALL_FACES(Fad27)
-COULOMB_CONTACT_DUAL_ALL_FACES(Fad30)
-COULOMB_CONTACT_DUAL_ALL_FACES(Fad33)
-COULOMB_CONTACT_DUAL_ALL_FACES(Fad36)
+COULOMB_CONTACT_DUAL_ALL_FACES(SegmentFad2D)
+COULOMB_CONTACT_DUAL_ALL_FACES(Fad3DTriTri)
+COULOMB_CONTACT_DUAL_ALL_FACES(Fad3DTriQuad)
+COULOMB_CONTACT_DUAL_ALL_FACES(Fad3DQuadTri)
+COULOMB_CONTACT_DUAL_ALL_FACES(Fad3DQuadQuad)
 #undef COULOMB_CONTACT_DUAL_ALL_FACES
 #undef COULOMB_CONTACT_DUAL_INSTANTIATE
 

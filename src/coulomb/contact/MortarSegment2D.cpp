@@ -2,14 +2,15 @@
 /// @brief Segment-based mortar integration of a Line2 pair (see the header for the equations).
 #include "coulomb/contact/MortarSegment2D.hpp"
 
-#include <Sacado.hpp>
+#include "coulomb/contact/MortarScalarTypes.hpp"
+
 #include <cmath>
 #include <utility>
 
 namespace coulomb::contact {
 namespace {
 
-using Fad12 = Sacado::Fad::SFad<double, kSegment2DInputs>;
+using Fad12 = SegmentFad2D;
 constexpr mesh::FaceType kLine = mesh::FaceType::Line2;
 
 template <typename T>

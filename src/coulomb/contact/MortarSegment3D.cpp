@@ -2,7 +2,8 @@
 /// @brief Auxiliary-plane mortar integration of a 3D face pair (equations in the header).
 #include "coulomb/contact/MortarSegment3D.hpp"
 
-#include <Sacado.hpp>
+#include "coulomb/contact/MortarScalarTypes.hpp"
+
 #include <cmath>
 #include <type_traits>
 
@@ -246,7 +247,7 @@ MortarSegment3DLinearization<S, Mf> linearizeSegment3D(const FaceNodes<S, double
   constexpr int nS = FaceTraits<S>::nodes;
   constexpr int nM = FaceTraits<Mf>::nodes;
   constexpr int nI = segment3DInputs<S, Mf>;
-  using Fad = Sacado::Fad::SFad<double, nI>;
+  using Fad = SegmentFad3D<S, Mf>;
   FaceNodes<S, Fad> fxs, fns;
   FaceNodes<Mf, Fad> fxm;
   for (int a = 0; a < nS; ++a)
@@ -281,11 +282,11 @@ MortarSegment3DLinearization<S, Mf> linearizeSegment3D(const FaceNodes<S, double
 #define COULOMB_CONTACT_SEGMENT3D_INSTANTIATE(S, Mf)                                                      \
   template MortarSegment3D<S, Mf, double> integrateSegment3D<S, Mf, double>(                            \
       const FaceNodes<S, double>&, const FaceNodes<S, double>&, const FaceNodes<Mf, double>&, double);    \
-  template MortarSegment3D<S, Mf, Sacado::Fad::SFad<double, segment3DInputs<S, Mf>>>                   \
-  integrateSegment3D<S, Mf, Sacado::Fad::SFad<double, segment3DInputs<S, Mf>>>(                         \
-      const FaceNodes<S, Sacado::Fad::SFad<double, segment3DInputs<S, Mf>>>&,                           \
-      const FaceNodes<S, Sacado::Fad::SFad<double, segment3DInputs<S, Mf>>>&,                           \
-      const FaceNodes<Mf, Sacado::Fad::SFad<double, segment3DInputs<S, Mf>>>&, double);                 \
+  template MortarSegment3D<S, Mf, SegmentFad3D<S, Mf>>                   \
+  integrateSegment3D<S, Mf, SegmentFad3D<S, Mf>>(                         \
+      const FaceNodes<S, SegmentFad3D<S, Mf>>&,                           \
+      const FaceNodes<S, SegmentFad3D<S, Mf>>&,                           \
+      const FaceNodes<Mf, SegmentFad3D<S, Mf>>&, double);                 \
   template MortarSegment3DLinearization<S, Mf> linearizeSegment3D<S, Mf>(                                 \
       const FaceNodes<S, double>&, const FaceNodes<S, double>&, const FaceNodes<Mf, double>&, double);
 COULOMB_CONTACT_SEGMENT3D_INSTANTIATE(FaceType::Tri3, FaceType::Tri3)

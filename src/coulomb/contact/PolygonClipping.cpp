@@ -2,7 +2,8 @@
 /// @brief Sutherland–Hodgman clipping of convex polygons, generic in the scalar.
 #include "coulomb/contact/PolygonClipping.hpp"
 
-#include <Sacado.hpp>
+#include "coulomb/contact/MortarScalarTypes.hpp"
+
 #include <cmath>
 #include <utility>
 
@@ -124,16 +125,17 @@ Polygon2<T> clipConvexPolygon(const Polygon2<T>& subject, const Polygon2<T>& cli
   template void makeCounterClockwise<T>(Polygon2<T>&);              \
   template Polygon2<T> clipConvexPolygon<T>(const Polygon2<T>&, const Polygon2<T>&, double);
 
-// The scalar types of the 3D mortar kernels (MortarSegment3D.cpp).
-using Fad27 = Sacado::Fad::SFad<double, 27>;
-using Fad30 = Sacado::Fad::SFad<double, 30>;
-using Fad33 = Sacado::Fad::SFad<double, 33>;
-using Fad36 = Sacado::Fad::SFad<double, 36>;
+// The scalar types of the 3D mortar kernels (MortarScalarTypes.hpp).
+using mesh::FaceType;
+using Fad3DTriTri = SegmentFad3D<FaceType::Tri3, FaceType::Tri3>;
+using Fad3DTriQuad = SegmentFad3D<FaceType::Tri3, FaceType::Quad4>;
+using Fad3DQuadTri = SegmentFad3D<FaceType::Quad4, FaceType::Tri3>;
+using Fad3DQuadQuad = SegmentFad3D<FaceType::Quad4, FaceType::Quad4>;
 COULOMB_CONTACT_CLIP_INSTANTIATE(double)
-COULOMB_CONTACT_CLIP_INSTANTIATE(Fad27)
-COULOMB_CONTACT_CLIP_INSTANTIATE(Fad30)
-COULOMB_CONTACT_CLIP_INSTANTIATE(Fad33)
-COULOMB_CONTACT_CLIP_INSTANTIATE(Fad36)
+COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DTriTri)
+COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DTriQuad)
+COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DQuadTri)
+COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DQuadQuad)
 #undef COULOMB_CONTACT_CLIP_INSTANTIATE
 
 }  // namespace coulomb::contact
