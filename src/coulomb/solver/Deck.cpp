@@ -5,6 +5,7 @@
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
+#include "coulomb/contact/ContactSettings.hpp"
 #include "coulomb/core/Error.hpp"
 #include "coulomb/fem/ModelSettings.hpp"
 #include "coulomb/io/ParameterValidation.hpp"
@@ -36,6 +37,7 @@ Teuchos::RCP<const ParameterList> validDeckParameters() {
     ParameterList& mesh = valid->sublist("Mesh", false, std::string(io::kRequired) + "The Exodus II mesh");
     mesh.set("File", "", std::string(io::kRequired) + "Exodus II mesh file, relative to the deck's folder");
     fem::addValidModelParameters(*valid);
+    contact::addValidContactParameters(*valid);
 
     ParameterList& stepping = valid->sublist("Load Stepping", false, "Pseudo-time load stepping from t = 0");
     stepping.set("Number of Steps", 1, "equal steps to reach the final time", range<int>(1, 1000000));

@@ -17,7 +17,12 @@ namespace coulomb::solver {
 /// which is wrong when distributed in Debian's 13.2).
 /// Below 5000 DoFs the preconditioner is Ifpack2 symmetric Gauss-Seidel
 /// instead (tiny hierarchies are fragile, see the .cpp).
-Teuchos::RCP<Teuchos::ParameterList> defaultLinearSolverParameters(int dofsPerNode, long long numGlobalDofs);
+/// `symmetric` false (contact with condensed multipliers: the gap rows make
+/// the tangent nonsymmetric): Belos Pseudo Block GMRES instead of CG, and
+/// Gauss-Seidel smoothing in MueLu instead of Chebyshev (whose eigenvalue
+/// bounds assume a symmetric matrix).
+Teuchos::RCP<Teuchos::ParameterList> defaultLinearSolverParameters(int dofsPerNode, long long numGlobalDofs,
+                                                                   bool symmetric = true);
 
 /// @brief Stratimikos builder output plus the MueLu sublist where the
 /// near-null space and coordinates must be set again before each setup
@@ -33,7 +38,7 @@ struct LinearSolver {
 /// coulomb::Error (one line) if Stratimikos rejects the list. "Amesos2" is
 /// served by GatheredDirectSolverFactory (factored on one rank) at any rank count.
 LinearSolver buildLinearSolver(const Teuchos::ParameterList& user, int dofsPerNode,
-                               long long numGlobalDofs);
+                               long long numGlobalDofs, bool symmetric = true);
 
 /// @brief Puts rigid-body modes (3 in 2D, 6 in 3D) and nodal coordinates
 /// into the MueLu sublist of `solver`, as MueLu's "Nullspace"/"Coordinates".

@@ -1,10 +1,16 @@
 #include "coulomb/solver/ModelEvaluator.hpp"
 
+#include <cmath>
 #include <limits>
 
+#include <Thyra_TpetraLinearOp.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
+
+#include "coulomb/contact/ContactModel.hpp"
+#include "coulomb/core/Error.hpp"
+#include "coulomb/core/Parallel.hpp"
 
 namespace coulomb::solver {
 
@@ -12,12 +18,13 @@ using Extract = Thyra::TpetraOperatorVectorExtraction<Scalar, LocalOrdinal, Glob
 
 ModelEvaluator::ModelEvaluator(fem::Assembler& assembler, const Teuchos::RCP<const Map>& ownedMap,
                                Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> factory,
-                               std::function<void()> beforeJacobian)
+                               std::function<void()> beforeJacobian, contact::ContactModel* contact)
     : assembler_(assembler),
       map_(ownedMap),
       space_(Thyra::createVectorSpace<Scalar>(ownedMap)),
       factory_(std::move(factory)),
-      beforeJacobian_(std::move(beforeJacobian)) {
+      beforeJacobian_(std::move(beforeJacobian)),
+      contact_(contact && !contact->empty() ? contact : nullptr) {
   nominal_ = createInArgs();
   auto x0 = Thyra::createMember(space_);
   Thyra::V_S(x0.ptr(), 0.0);
@@ -48,6 +55,12 @@ Teuchos::RCP<Thyra::LinearOpBase<double>> ModelEvaluator::create_W_op() const {
 void ModelEvaluator::evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<double>& in,
                                    const Thyra::ModelEvaluatorBase::OutArgs<double>& out) const {
   const auto x = Extract::getConstTpetraVector(in.get_x());
+  if (contact_) {
+    Teuchos::RCP<Vector> f;
+    if (out.get_f() != Teuchos::null) f = Extract::getTpetraVector(out.get_f());
+    evalContact(*x, f.get(), out.get_W_op());
+    return;
+  }
   Teuchos::RCP<Vector> f;
   if (out.get_f() != Teuchos::null) f = Extract::getTpetraVector(out.get_f());
   CrsMatrix* jacobian = nullptr;
@@ -60,6 +73,54 @@ void ModelEvaluator::evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<doubl
   // An inverted element makes this iterate meaningless: a NaN residual makes
   // NOX's FiniteValue test fail the step, and the stepper cuts back.
   if (status.invertedElement && f != Teuchos::null) f->putScalar(std::numeric_limits<double>::quiet_NaN());
+}
+
+namespace {
+
+bool sameVector(const Vector& a, const Vector& b) {
+  const auto da = a.getData(0), db = b.getData(0);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(da.size()); ++i)
+    if (da[i] != db[i]) return false;
+  return true;
+}
+
+bool allFinite(const Vector& v) {
+  const auto d = v.getData(0);
+  for (double value : d)
+    if (!std::isfinite(value)) return false;
+  return true;
+}
+
+}  // namespace
+
+void ModelEvaluator::evalContact(const Vector& x, Vector* f, const Teuchos::RCP<Thyra::LinearOpBase<double>>& W) const {
+  // The same iterate on every rank or none: agree before any collective.
+  const bool local = lastX_.is_null() || !sameVector(x, *lastX_);
+  if (anyRank(*map_->getComm(), local)) {
+    if (bulkResidual_.is_null()) bulkResidual_ = Teuchos::rcp(new Vector(map_));
+    lastInverted_ = assembler_.assemble(time_, x, bulkResidual_.get(), nullptr).invertedElement;
+    lastInverted_ = anyRank(*map_->getComm(), lastInverted_ || !allFinite(*bulkResidual_));
+    if (!lastInverted_) contact_->update(x, *bulkResidual_);
+    lastX_ = Teuchos::rcp(new Vector(x, Teuchos::Copy));
+  }
+  if (f) {
+    if (lastInverted_) {
+      f->putScalar(std::numeric_limits<double>::quiet_NaN());
+    } else {
+      f->assign(*bulkResidual_);
+      contact_->condenseResidual(*f);
+    }
+  }
+  if (W != Teuchos::null && !lastInverted_) {
+    beforeJacobian_();
+    if (bulkTangent_.is_null()) bulkTangent_ = assembler_.createMatrix();
+    assembler_.assemble(time_, x, nullptr, bulkTangent_.get());
+    auto tangent = contact_->condensedTangent(bulkTangent_);
+    using ThyraOp = Thyra::TpetraLinearOp<Scalar, LocalOrdinal, GlobalOrdinal, typename CrsMatrix::node_type>;
+    auto* op = dynamic_cast<ThyraOp*>(W.get());
+    COULOMB_REQUIRE(op != nullptr, "internal: the Jacobian operator is not a Thyra::TpetraLinearOp");
+    op->initialize(space_, space_, tangent);
+  }
 }
 
 }  // namespace coulomb::solver

@@ -2,6 +2,12 @@
 /// @file ModelEvaluator.hpp
 /// @brief The discrete problem as a Thyra ModelEvaluator for NOX:
 /// x = displacements (owned map), f = residual, W = tangent (Tpetra CrsMatrix).
+///
+/// With contact (contact::ContactModel) f and W are the condensed residual and
+/// tangent of ContactModel.hpp. The contact state (active set, multipliers)
+/// is updated once per new iterate x, at its first evaluation (f or W), from
+/// the bulk residual at x; W is then a new matrix per iterate (its pattern
+/// follows the contact), put into the Thyra operator NOX holds.
 #include <functional>
 
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
@@ -9,6 +15,10 @@
 
 #include "coulomb/core/TpetraTypes.hpp"
 #include "coulomb/fem/Assembler.hpp"
+
+namespace coulomb::contact {
+class ContactModel;
+}
 
 namespace coulomb::solver {
 
@@ -18,10 +28,15 @@ public:
   /// preconditioner's user data).
   ModelEvaluator(fem::Assembler& assembler, const Teuchos::RCP<const Map>& ownedMap,
                  Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> factory,
-                 std::function<void()> beforeJacobian);
+                 std::function<void()> beforeJacobian, contact::ContactModel* contact = nullptr);
 
   /// Pseudo time at which loads and prescribed displacements are evaluated.
-  void setTime(double time) { time_ = time; }
+  void setTime(double time) {
+    time_ = time;
+    forgetIterate();
+  }
+  /// The next evaluation recomputes the contact state even at the same x.
+  void forgetIterate() const { lastX_ = Teuchos::null; }
   double time() const { return time_; }
 
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_x_space() const override { return space_; }
@@ -43,6 +58,12 @@ private:
   std::function<void()> beforeJacobian_;
   Thyra::ModelEvaluatorBase::InArgs<double> nominal_;
   double time_ = 0.0;
+  contact::ContactModel* contact_ = nullptr;
+  // Contact: the iterate whose state is current, its bulk residual, the bulk tangent.
+  mutable Teuchos::RCP<Vector> lastX_, bulkResidual_;
+  mutable Teuchos::RCP<CrsMatrix> bulkTangent_;
+  mutable bool lastInverted_ = false;
+  void evalContact(const Vector& x, Vector* f, const Teuchos::RCP<Thyra::LinearOpBase<double>>& W) const;
 };
 
 }  // namespace coulomb::solver

@@ -15,6 +15,8 @@
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "coulomb/contact/ContactModel.hpp"
+
 namespace coulomb::solver {
 
 namespace {
@@ -30,18 +32,42 @@ public:
   int lastLinearIterations() const { return last_linear_solve_num_iters_; }
 };
 
+/// Contact part of the convergence test: the active set did not change at
+/// the current iterate and the normal constraint residual is small.
+class ContactStatusTest : public NOX::StatusTest::Generic {
+public:
+  explicit ContactStatusTest(const contact::ContactModel& contact) : contact_(contact) {}
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic&, NOX::StatusTest::CheckType) override {
+    status_ = contact_.converged() ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
+    return status_;
+  }
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& stream, int indent = 0) const override {
+    for (int i = 0; i < indent; ++i) stream << ' ';
+    return stream << status_ << " contact: active set unchanged and normal residual converged\n";
+  }
+
+private:
+  const contact::ContactModel& contact_;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+};
+
 /// Records one table row per iteration and prints it on rank 0.
 class IterationTable : public NOX::Observer {
 public:
-  IterationTable(NewtonReport& report, std::ostream* console) : report_(report), console_(console) {}
+  IterationTable(NewtonReport& report, std::ostream* console, const contact::ContactModel* contact)
+      : report_(report), console_(console), contact_(contact) {}
 
   void runPreSolve(const NOX::Solver::Generic& solver) override {
     start_ = Clock::now();
     NewtonIteration row;
     row.residualNorm = solver.getSolutionGroup().getNormF();
+    addContact(row);
     report_.iterations.push_back(row);
     if (console_) {
-      *console_ << "    iter   |residual|    |increment|  lin.it  time[s]\n";
+      *console_ << "    iter   |residual|    |increment|  lin.it  time[s]";
+      if (contact_) *console_ << "  active changed  |r_normal|  set";
+      *console_ << "\n";
       print(row);
     }
   }
@@ -58,6 +84,7 @@ public:
     row.incrementNorm = difference->norm();
     if (const auto* counting = dynamic_cast<const CountingGroup*>(&group)) row.linearIterations = counting->lastLinearIterations();
     row.seconds = std::chrono::duration<double>(now - start_).count();
+    addContact(row);
     start_ = now;
     report_.iterations.push_back(row);
     if (console_) print(row);
@@ -65,16 +92,30 @@ public:
 
 private:
   using Clock = std::chrono::steady_clock;
+  void addContact(NewtonIteration& row) const {
+    if (!contact_) return;
+    const auto& s = contact_->lastSummary();
+    row.activeNodes = static_cast<long long>(s.activeSet.active);
+    row.changedNodes = static_cast<long long>(s.activeSet.changed);
+    row.normalResidual = s.normalResidual;
+    row.contactConverged = contact_->converged();
+  }
   void print(const NewtonIteration& row) const {
     *console_ << "    " << std::setw(4) << row.iteration << std::scientific << std::setprecision(3) << "  "
               << std::setw(11) << row.residualNorm << "  " << std::setw(11);
     if (row.iteration == 0) *console_ << "-";
     else *console_ << row.incrementNorm;
     *console_ << "  " << std::setw(6) << row.linearIterations << "  " << std::fixed << std::setprecision(3)
-              << std::setw(7) << row.seconds << std::defaultfloat << "\n";
+              << std::setw(7) << row.seconds << std::defaultfloat;
+    if (row.activeNodes >= 0)
+      *console_ << "  " << std::setw(6) << row.activeNodes << "  " << std::setw(7) << row.changedNodes << "  "
+                << std::scientific << std::setprecision(3) << std::setw(10) << row.normalResidual << std::defaultfloat
+                << "  " << (row.contactConverged ? "yes" : "no");
+    *console_ << "\n";
   }
   NewtonReport& report_;
   std::ostream* console_;
+  const contact::ContactModel* contact_;
   Clock::time_point start_;
 };
 
@@ -96,11 +137,13 @@ Teuchos::RCP<Teuchos::ParameterList> NewtonSolver::defaultParameters() {
 }
 
 NewtonSolver::NewtonSolver(Teuchos::RCP<ModelEvaluator> model, const Teuchos::ParameterList& noxParameters,
-                           const NewtonSettings& settings, std::ostream* console)
+                           const NewtonSettings& settings, std::ostream* console,
+                           const contact::ContactModel* contact)
     : model_(std::move(model)),
       noxParameters_(Teuchos::rcp(new Teuchos::ParameterList(noxParameters))),
       settings_(settings),
-      console_(console) {
+      console_(console),
+      contact_(contact && !contact->empty() ? contact : nullptr) {
   noxParameters_->setParametersNotAlreadySet(*defaultParameters());
 }
 
@@ -113,9 +156,12 @@ NewtonReport NewtonSolver::solve(Vector& u) {
   group->computeF();
 
   using namespace NOX::StatusTest;
-  auto converged = Teuchos::rcp(new Combo(Combo::OR));
-  converged->addStatusTest(Teuchos::rcp(new NormF(settings_.absoluteTolerance, NormF::Unscaled)));
-  converged->addStatusTest(Teuchos::rcp(new NormF(*group, settings_.relativeTolerance, NormF::Unscaled)));
+  auto residualSmall = Teuchos::rcp(new Combo(Combo::OR));
+  residualSmall->addStatusTest(Teuchos::rcp(new NormF(settings_.absoluteTolerance, NormF::Unscaled)));
+  residualSmall->addStatusTest(Teuchos::rcp(new NormF(*group, settings_.relativeTolerance, NormF::Unscaled)));
+  auto converged = Teuchos::rcp(new Combo(Combo::AND));
+  converged->addStatusTest(residualSmall);
+  if (contact_) converged->addStatusTest(Teuchos::rcp(new ContactStatusTest(*contact_)));
   auto tests = Teuchos::rcp(new Combo(Combo::OR));
   tests->addStatusTest(Teuchos::rcp(new FiniteValue));
   tests->addStatusTest(converged);
@@ -124,7 +170,7 @@ NewtonReport NewtonSolver::solve(Vector& u) {
   NewtonReport report;
   auto parameters = Teuchos::rcp(new Teuchos::ParameterList(*noxParameters_));
   parameters->sublist("Solver Options").set<Teuchos::RCP<NOX::Observer>>(
-      "Observer", Teuchos::rcp(new IterationTable(report, console_)));
+      "Observer", Teuchos::rcp(new IterationTable(report, console_, contact_)));
   auto solver = NOX::Solver::buildSolver(group, tests, parameters);
   const auto status = solver->solve();
   report.converged = status == NOX::StatusTest::Converged;

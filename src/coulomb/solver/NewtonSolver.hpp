@@ -11,6 +11,10 @@
 #include "coulomb/core/TpetraTypes.hpp"
 #include "coulomb/solver/ModelEvaluator.hpp"
 
+namespace coulomb::contact {
+class ContactModel;
+}
+
 namespace coulomb::solver {
 
 /// @brief Convergence settings (deck sublist "Newton").
@@ -27,6 +31,12 @@ struct NewtonIteration {
   double incrementNorm = 0;
   int linearIterations = 0;
   double seconds = 0;
+  // Contact (when present; Fig. 4.23 columns): active nodes, nodes that
+  // changed state at this iterate, normal constraint residual, set converged.
+  long long activeNodes = -1;
+  long long changedNodes = 0;
+  double normalResidual = 0;
+  bool contactConverged = false;
 };
 
 struct NewtonReport {
@@ -39,7 +49,8 @@ class NewtonSolver {
 public:
   /// `noxParameters`: the deck's "Nonlinear Solver" sublist (NOX names), completed with defaults.
   NewtonSolver(Teuchos::RCP<ModelEvaluator> model, const Teuchos::ParameterList& noxParameters,
-               const NewtonSettings& settings, std::ostream* console);
+               const NewtonSettings& settings, std::ostream* console,
+               const contact::ContactModel* contact = nullptr);
 
   /// Solves f(u) = 0 starting from `u`; on return `u` holds the last iterate.
   NewtonReport solve(Vector& u);
@@ -52,6 +63,7 @@ private:
   Teuchos::RCP<Teuchos::ParameterList> noxParameters_;
   NewtonSettings settings_;
   std::ostream* console_;
+  const contact::ContactModel* contact_ = nullptr;
 };
 
 }  // namespace coulomb::solver

@@ -10,6 +10,8 @@
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "coulomb/contact/ContactModel.hpp"
+#include "coulomb/contact/ContactSettings.hpp"
 #include "coulomb/core/Error.hpp"
 #include "coulomb/fem/Assembler.hpp"
 #include "coulomb/fem/DofMap.hpp"
@@ -69,16 +71,22 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
   mesh_ = std::make_unique<mesh::Mesh>(global, comm_);
   dofs_ = std::make_unique<fem::DofMap>(*mesh_);
   assembler_ = std::make_unique<fem::Assembler>(*mesh_, *dofs_, model);
+  const auto contactSettings = contact::parseContactSettings(*deck);
+  if (!contactSettings.pairs.empty())
+    contact_ = std::make_unique<contact::ContactModel>(*mesh_, dofs_->ownedMap(), contactSettings, model);
 
   solvers_ = std::make_unique<Solvers>();
   solvers_->linear = buildLinearSolver(settings_.linearSolver, dofs_->dofsPerNode(),
-                                      static_cast<long long>(dofs_->ownedMap()->getGlobalNumElements()));
+                                      static_cast<long long>(dofs_->ownedMap()->getGlobalNumElements()),
+                                      !(contact_ && contact_->needsNonsymmetricSolver()));
   solvers_->nullspace = fem::rigidBodyModes(*mesh_, *dofs_);
   solvers_->coordinates = fem::nodalCoordinates(*mesh_, *dofs_);
   Solvers* s = solvers_.get();
   solvers_->model = Teuchos::rcp(new ModelEvaluator(*assembler_, dofs_->ownedMap(), solvers_->linear.factory,
-                                                    [s] { setMueLuUserData(s->linear, s->nullspace, s->coordinates); }));
-  solvers_->newton = std::make_unique<NewtonSolver>(solvers_->model, settings_.nonlinearSolver, settings_.newton, console_);
+                                                    [s] { setMueLuUserData(s->linear, s->nullspace, s->coordinates); },
+                                                    contact_.get()));
+  solvers_->newton = std::make_unique<NewtonSolver>(solvers_->model, settings_.nonlinearSolver, settings_.newton, console_,
+                                                    contact_.get());
   displacement_ = Teuchos::rcp(new Vector(dofs_->ownedMap()));
   reactions_ = Teuchos::rcp(new Vector(dofs_->ownedMap()));
 
@@ -111,9 +119,16 @@ void Simulation::writeStep(double time, const std::vector<double>& stepGlobals) 
   fields.push_back({componentNames("displacement", dim), byNode(*displacement_, *dofs_)});
   fields.push_back({componentNames("reaction", dim), byNode(*reactions_, *dofs_)});
   fields.push_back({{"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_xz", "von_mises"}, stress});
+  if (contact_) {
+    auto values = Teuchos::rcp(new MultiVector(dofs_->ownedNodeMap(), contact_->nodalFieldNames().size()));
+    contact_->nodalFields(dofs_->ownedNodeMap(), *values);
+    fields.push_back({contact_->nodalFieldNames(), values});
+  }
   std::vector<double> globals = stepGlobals;
   for (const auto& set : reactionSets_)
     for (double value : reactionTotal(set)) globals.push_back(value);
+  if (contact_)
+    for (double value : contact_->globals()) globals.push_back(value);
   solvers_->writer->writeStep(time, fields, globals);
 }
 
@@ -124,9 +139,13 @@ RunSummary Simulation::run() {
   for (const auto& n : componentNames("reaction", dim)) nodalNames.push_back(n);
   for (const char* n : {"stress_xx", "stress_yy", "stress_zz", "stress_xy", "stress_yz", "stress_xz", "von_mises"})
     nodalNames.push_back(n);
+  if (contact_)
+    for (const auto& n : contact_->nodalFieldNames()) nodalNames.push_back(n);
   std::vector<std::string> globalNames = {"newton_iterations", "linear_iterations", "cutbacks"};
   for (const auto& set : reactionSets_)
     for (const auto& n : componentNames("reaction_" + set, dim)) globalNames.push_back(n);
+  if (contact_)
+    for (const auto& n : contact_->globalNames()) globalNames.push_back(n);
   solvers_->writer = std::make_unique<ResultWriter>(settings_.outputFile, *mesh_, dofs_->ownedNodeMap(), nodalNames,
                                                     globalNames);
 
@@ -149,6 +168,7 @@ RunSummary Simulation::run() {
     trial.assign(*displacement_);
     constraints.setPrescribedValues(next, trial);
     solvers_->model->setTime(next);
+    if (contact_) contact_->beginStep();
     const NewtonReport report = solvers_->newton->solve(trial);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - stepStart).count();
     const int iterations = static_cast<int>(report.iterations.size()) - 1;
@@ -161,6 +181,7 @@ RunSummary Simulation::run() {
                                                            "file keeps the converged steps as "
                                                         << ResultWriter::partialPath(settings_.outputFile));
       if (console_) *console_ << "  not converged after " << iterations << " iterations: cutting the step in half\n";
+      if (contact_) contact_->restoreStep();
       step /= 2;
       successesSinceCutback = 0;
       continue;
@@ -177,6 +198,9 @@ RunSummary Simulation::run() {
     std::vector<double> norms;
     for (const auto& row : report.iterations) norms.push_back(row.residualNorm);
     summary.stepResidualNorms.push_back(norms);
+    std::vector<long long> active;
+    for (const auto& row : report.iterations) active.push_back(row.activeNodes);
+    summary.stepActiveNodes.push_back(active);
     writeStep(time, {double(iterations), double(report.linearIterations()), double(summary.cutbacks)});
     if (console_)
       *console_ << "  step " << summary.steps << " converged: t = " << time << ", " << iterations << " Newton / "

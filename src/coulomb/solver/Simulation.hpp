@@ -21,6 +21,10 @@ class DofMap;
 class Assembler;
 }
 
+namespace coulomb::contact {
+class ContactModel;
+}
+
 namespace coulomb::solver {
 
 /// @brief What a finished run reports (the same on every rank).
@@ -34,6 +38,7 @@ struct RunSummary {
   std::vector<double> stepTimes;   ///< pseudo time of each converged step
   std::vector<int> stepNewtonIterations;
   std::vector<std::vector<double>> stepResidualNorms;  ///< Newton residual sequence per converged step
+  std::vector<std::vector<long long>> stepActiveNodes;   ///< contact: active nodes per Newton iteration
 };
 
 class Simulation {
@@ -57,6 +62,8 @@ public:
   fem::Assembler& assembler() { return *assembler_; }
   /// Total reaction force per component on the named node set at the last step.
   std::vector<double> reactionTotal(const std::string& nodeSet) const;
+  /// The contact model (null without a "Contact" sublist with pairs).
+  const contact::ContactModel* contact() const { return contact_.get(); }
 
 private:
   struct Solvers;
@@ -68,6 +75,7 @@ private:
   std::unique_ptr<mesh::Mesh> mesh_;
   std::unique_ptr<fem::DofMap> dofs_;
   std::unique_ptr<fem::Assembler> assembler_;
+  std::unique_ptr<contact::ContactModel> contact_;
   std::unique_ptr<Solvers> solvers_;
   Teuchos::RCP<Vector> displacement_;
   Teuchos::RCP<Vector> reactions_;

@@ -1,0 +1,147 @@
+#include "coulomb/contact/ContactModel.hpp"
+
+#include <cmath>
+
+#include <TpetraExt_MatrixMatrix.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "coulomb/core/Parallel.hpp"
+
+namespace coulomb::contact {
+
+namespace {
+const char* const kComponents[] = {"x", "y", "z"};
+}
+
+ContactModel::ContactModel(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& ownedDofMap,
+                           const ContactSettings& settings, const fem::ModelSettings& model)
+    : settings_(settings), dim_(mesh.dimension()), map_(ownedDofMap) {
+  for (const auto& pair : settings.pairs)
+    pairs_.push_back(std::make_unique<ContactPair>(mesh, ownedDofMap, pair, model));
+  pairSummaries_.resize(pairs_.size());
+}
+
+ContactModel::~ContactModel() = default;
+
+bool ContactModel::needsNonsymmetricSolver() const {
+  for (const auto& pair : pairs_)
+    if (pair->settings().formulation == ContactFormulation::ALM) return true;
+  return false;
+}
+
+void ContactModel::beginStep() {
+  updatesInStep_ = 0;
+  for (auto& pair : pairs_) pair->beginStep();
+}
+
+void ContactModel::restoreStep() {
+  updatesInStep_ = 0;
+  for (auto& pair : pairs_) pair->restoreStep();
+}
+
+void ContactModel::update(const Vector& u, const Vector& bulkResidual) {
+  contributions_ = ContactContributions();
+  summary_ = ContactIterationSummary();
+  double normal2 = 0, force2 = 0;
+  bool anyUpdated = false;
+  for (std::size_t p = 0; p < pairs_.size(); ++p) {
+    // Simplified semi-smooth Newton: the set moves at the predictor and the first iterate only.
+    const bool updateSet = pairs_[p]->settings().semiSmooth == SemiSmoothNewton::Full || updatesInStep_ < 2;
+    anyUpdated = anyUpdated || updateSet;
+    pairSummaries_[p] = pairs_[p]->update(u, bulkResidual, updateSet, contributions_);
+    summary_.activeSet += pairSummaries_[p].activeSet;
+    normal2 += pairSummaries_[p].normalResidual2;
+    force2 += pairSummaries_[p].contactForce2;
+  }
+  ++updatesInStep_;
+  summary_.normalResidual = std::sqrt(normal2);
+  summary_.contactForce = std::sqrt(force2);
+  summary_.setUpdated = anyUpdated;
+
+  const bool local = !contributions_.transform.empty() || !contributions_.contactStiffness.empty() ||
+                     !contributions_.constraint.empty() || !contributions_.contactResidual.empty() ||
+                     !contributions_.constraintResidual.empty();
+  contributes_ = anyRank(*map_->getComm(), local);
+  transform_ = constraint_ = stiffness_ = Teuchos::null;
+  if (!contributes_) return;
+  // T = I + (T - I): the identity on the owned rows, then the pairs' entries.
+  std::vector<linalg::MatrixTriplet> transform;
+  const std::size_t numLocal = map_->getNodeNumElements();
+  transform.reserve(numLocal + contributions_.transform.size());
+  for (std::size_t i = 0; i < numLocal; ++i) {
+    const GlobalOrdinal gid = map_->getGlobalElement(static_cast<LocalOrdinal>(i));
+    transform.push_back({gid, gid, 1.0});
+  }
+  transform.insert(transform.end(), contributions_.transform.begin(), contributions_.transform.end());
+  transform_ = linalg::matrixFromTriplets(transform, map_);
+  constraint_ = linalg::matrixFromTriplets(contributions_.constraint, map_);
+  stiffness_ = linalg::matrixFromTriplets(contributions_.contactStiffness, map_);
+}
+
+void ContactModel::condenseResidual(Vector& residual) const {
+  if (!contributes_) return;
+  linalg::addEntries(contributions_.contactResidual, residual);
+  Vector copy(residual, Teuchos::Copy);
+  transform_->apply(copy, residual);
+  linalg::addEntries(contributions_.constraintResidual, residual);
+}
+
+Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMatrix>& bulkTangent) const {
+  if (!contributes_) return bulkTangent;
+  auto tangent = Tpetra::MatrixMatrix::add(1.0, false, *bulkTangent, 1.0, false, *stiffness_);
+  auto product = Teuchos::rcp(new CrsMatrix(map_, 0));
+  Tpetra::MatrixMatrix::Multiply(*transform_, false, *tangent, false, *product);
+  return Tpetra::MatrixMatrix::add(1.0, false, *product, 1.0, false, *constraint_);
+}
+
+bool ContactModel::converged() const {
+  return summary_.activeSet.unchanged() && summary_.normalConverged(settings_);
+}
+
+std::vector<std::string> ContactModel::nodalFieldNames() const {
+  std::vector<std::string> names = {"contact_pressure", "contact_gap", "contact_weighted_gap", "contact_state"};
+  for (int c = 0; c < dim_; ++c) names.push_back(std::string("contact_normal_") + kComponents[c]);
+  for (int c = 0; c < dim_; ++c) names.push_back(std::string("contact_multiplier_") + kComponents[c]);
+  return names;
+}
+
+void ContactModel::nodalFields(const Teuchos::RCP<const Map>& ownedNodeMap, MultiVector& fields) const {
+  fields.putScalar(0.0);
+  auto view = fields.get2dViewNonConst();
+  for (const auto& pair : pairs_)
+    for (const auto& o : pair->nodeOutput()) {
+      const LocalOrdinal i = ownedNodeMap->getLocalElement(o.node);
+      if (i == Teuchos::OrdinalTraits<LocalOrdinal>::invalid()) continue;
+      view[0][i] = o.pressure;
+      view[1][i] = o.gap;
+      view[2][i] = o.weightedGap;
+      view[3][i] = static_cast<double>(static_cast<int>(o.state));
+      for (int c = 0; c < dim_; ++c) {
+        view[4 + c][i] = o.normal[c];
+        view[4 + dim_ + c][i] = o.multiplier[c];
+      }
+    }
+}
+
+std::vector<std::string> ContactModel::globalNames() const {
+  std::vector<std::string> names;
+  for (const auto& pair : pairs_) {
+    for (int c = 0; c < dim_; ++c) names.push_back("contact_force_" + pair->settings().name + "_" + kComponents[c]);
+    names.push_back("contact_active_nodes_" + pair->settings().name);
+  }
+  return names;
+}
+
+std::vector<double> ContactModel::globals() const {
+  std::vector<double> values;
+  for (const auto& s : pairSummaries_) {
+    for (int c = 0; c < dim_; ++c) values.push_back(s.slaveForce[c]);
+    values.push_back(static_cast<double>(s.activeSet.active));
+  }
+  return values;
+}
+
+}  // namespace coulomb::contact

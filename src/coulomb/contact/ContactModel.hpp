@@ -1,0 +1,82 @@
+#pragma once
+/// @file ContactModel.hpp
+/// @brief All contact pairs of a run and the condensed Newton system they
+/// make with the bulk (ContactPair.hpp gives the formulas):
+///   F(u) = T (r - f_c) + g,   J = T (K + K_c) + G.
+/// The model evaluator calls update() at each new iterate (after the bulk
+/// residual), then condenseResidual() and, for the tangent,
+/// condensedTangent(). The state (active set, multipliers) is a function of
+/// the iterates seen so far in the step.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Teuchos_RCP.hpp>
+
+#include "coulomb/contact/ContactPair.hpp"
+#include "coulomb/contact/ContactSettings.hpp"
+#include "coulomb/core/TpetraTypes.hpp"
+
+namespace coulomb::contact {
+
+/// @brief What the last update found, summed over pairs and ranks.
+struct ContactIterationSummary {
+  ActiveSetSummary activeSet;
+  double normalResidual = 0;  ///< ||eps_n t g~|| over active ALM nodes [force]
+  double contactForce = 0;    ///< ||f_j|| over active slave nodes [force]
+  bool setUpdated = false;    ///< the active set was allowed to change at this update
+  /// The normal constraint test of ContactSettings.
+  bool normalConverged(const ContactSettings& s) const {
+    return normalResidual <= s.normalRelativeTolerance * contactForce + s.normalAbsoluteTolerance;
+  }
+};
+
+class ContactModel {
+public:
+  /// Collective; throws coulomb::Error naming the pair on bad sets.
+  ContactModel(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& ownedDofMap, const ContactSettings& settings,
+               const fem::ModelSettings& model);
+  ~ContactModel();
+
+  bool empty() const { return pairs_.empty(); }
+  const ContactSettings& settings() const { return settings_; }
+  const std::vector<std::unique_ptr<ContactPair>>& pairs() const { return pairs_; }
+  /// True when some pair is ALM: the condensed tangent is not symmetric.
+  bool needsNonsymmetricSolver() const;
+
+  void beginStep();
+  void restoreStep();
+
+  /// Collective: contact state at `u` with bulk residual `bulkResidual`,
+  /// contributions stored for the two calls below.
+  void update(const Vector& u, const Vector& bulkResidual);
+  /// residual := T (residual - f_c) + g   (residual: the bulk residual of the same u).
+  void condenseResidual(Vector& residual) const;
+  /// J = T (K + K_c) + G as a new matrix (K unchanged); K itself when no pair contributes.
+  Teuchos::RCP<CrsMatrix> condensedTangent(const Teuchos::RCP<CrsMatrix>& bulkTangent) const;
+
+  const ContactIterationSummary& lastSummary() const { return summary_; }
+  /// Converged: active set unchanged at the last update and the normal test met.
+  bool converged() const;
+
+  /// Owned-node fields for output, in nodalFieldNames() order.
+  std::vector<std::string> nodalFieldNames() const;
+  void nodalFields(const Teuchos::RCP<const Map>& ownedNodeMap, MultiVector& fields) const;
+  /// Per pair: contact force on the slave body (dim components) and the active node count.
+  std::vector<std::string> globalNames() const;
+  std::vector<double> globals() const;
+
+private:
+  ContactSettings settings_;
+  int dim_;
+  Teuchos::RCP<const Map> map_;
+  std::vector<std::unique_ptr<ContactPair>> pairs_;
+  std::vector<PairIterationSummary> pairSummaries_;
+  ContactIterationSummary summary_;
+  int updatesInStep_ = 0;
+  Teuchos::RCP<CrsMatrix> transform_, constraint_, stiffness_;
+  ContactContributions contributions_;
+  bool contributes_ = false;  ///< some rank has transform or stiffness entries
+};
+
+}  // namespace coulomb::contact

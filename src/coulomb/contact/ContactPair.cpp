@@ -1,0 +1,375 @@
+#include "coulomb/contact/ContactPair.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "coulomb/contact/CondensationFrame.hpp"
+#include "coulomb/contact/NodalContactLaw.hpp"
+#include "coulomb/core/Error.hpp"
+#include "coulomb/core/Parallel.hpp"
+
+namespace coulomb::contact {
+
+namespace {
+
+/// CondensationFrame of either dimension, widened to 3 components.
+struct Frame {
+  bool usable = false;
+  int numFree = 0;
+  std::array<int, 3> free{};
+  int gapSlot = -1;
+  double gapRowSign = 1, normFree = 0;
+  std::array<double, 3> a{};
+  std::array<std::array<double, 3>, 3> b{};
+};
+
+template <int dim>
+Frame widen(const std::array<double, 3>& n3, const std::array<bool, 3>& prescribed3) {
+  std::array<double, dim> n{};
+  std::array<bool, dim> prescribed{};
+  for (int c = 0; c < dim; ++c) {
+    n[c] = n3[c];
+    prescribed[c] = prescribed3[c];
+  }
+  const auto f = condensationFrame<dim>(n, prescribed);
+  Frame out;
+  out.usable = f.usable;
+  out.numFree = f.numFree;
+  for (int i = 0; i < f.numFree; ++i) out.free[i] = f.free[i];
+  out.gapSlot = f.gapSlot;
+  out.gapRowSign = f.gapRowSign;
+  out.normFree = f.normFree;
+  for (int c = 0; c < dim; ++c) {
+    out.a[c] = f.a[c];
+    for (int s = 0; s < dim; ++s) out.b[s][c] = f.b[s][c];
+  }
+  return out;
+}
+
+Frame frameOf(int dim, const std::array<double, 3>& n, const std::array<bool, 3>& prescribed) {
+  return dim == 2 ? widen<2>(n, prescribed) : widen<3>(n, prescribed);
+}
+
+/// Largest Young's modulus of the blocks carrying the pair's faces, and the
+/// thickness of the first slave face's block.
+void bodyProperties(const mesh::Mesh& mesh, const ContactInterface& contact, const fem::ModelSettings& model,
+                    double& youngsModulus, double& thickness) {
+  youngsModulus = 0;
+  thickness = 1;
+  const auto& global = mesh.global();
+  auto materialOf = [&](long long element) -> const fem::MaterialParameters& {
+    const auto& block = global.blocks[mesh.blockOfElement(element)];
+    const std::string name = mesh::displayName(block.name, "block", block.id);
+    const auto it = model.blockMaterials.find(name);
+    COULOMB_REQUIRE(it != model.blockMaterials.end(), "deck: element block '" << name << "' has no material");
+    return it->second;
+  };
+  for (const auto* faces : {&contact.slaveFaces(), &contact.masterFaces()})
+    for (const auto& face : *faces) youngsModulus = std::max(youngsModulus, materialOf(face.element).youngsModulus);
+  if (mesh.dimension() == 2) thickness = materialOf(contact.slaveFaces().front().element).thickness;
+}
+
+double meanSlaveFaceDiameter(const ContactInterface& contact) {
+  const auto x = referenceConfiguration(contact);
+  const int dim = contact.dimension();
+  double sum = 0;
+  for (const auto& face : contact.slaveFaces()) {
+    double diameter = 0;
+    for (int a = 0; a < face.numNodes; ++a)
+      for (int b = a + 1; b < face.numNodes; ++b) {
+        double d2 = 0;
+        for (int c = 0; c < dim; ++c) {
+          const double d = x.point(face.interfaceIndex[a])[c] - x.point(face.interfaceIndex[b])[c];
+          d2 += d * d;
+        }
+        diameter = std::max(diameter, std::sqrt(d2));
+      }
+    sum += diameter;
+  }
+  return sum / static_cast<double>(contact.slaveFaces().size());
+}
+
+}  // namespace
+
+ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& ownedDofMap,
+                         const ContactPairSettings& settings, const fem::ModelSettings& model)
+    : mesh_(mesh), dofMap_(ownedDofMap), settings_(settings), dim_(mesh.dimension()) {
+  const std::string what = "Contact/Pairs/" + settings.name;
+  interface_ = std::make_unique<ContactInterface>(mesh, settings.slave, settings.master, what);
+  gather_ = std::make_unique<InterfaceGather>(*interface_, ownedDofMap);
+  double youngsModulus = 0;
+  bodyProperties(mesh, *interface_, model, youngsModulus, thickness_);
+  const double h = meanSlaveFaceDiameter(*interface_);
+  epsN_ = settings.penalty > 0 ? settings.penalty : defaultPenalty(youngsModulus, h, settings.penaltyFactor);
+  k_ = settings.scaleFactor;
+  minimumD_ = 1e-8 * std::pow(h, dim_ - 1);
+
+  prescribed_.assign(interface_->interfaceNodes().size(), {false, false, false});
+  for (const auto& condition : model.dirichlet) {
+    const auto& set = mesh.global().nodeSets[mesh.nodeSetIndex(condition.nodeSet, "Dirichlet Conditions/" + condition.name)];
+    for (long long node : set.nodes) {
+      const int i = interface_->interfaceNodeIndex(node);
+      if (i < 0) continue;
+      for (int c : condition.components) prescribed_[i][c] = true;
+    }
+  }
+  const std::size_t owned = interface_->ownedSlaveNodes().size();
+  state_.assign(owned, ContactState::Inactive);
+  lambdaN_.assign(owned, 0.0);
+  pressure_.assign(owned, 0.0);
+  beginStep();
+}
+
+ContactPair::~ContactPair() = default;
+
+void ContactPair::beginStep() {
+  searched_ = false;
+  stepStartState_ = state_;
+  stepStartLambdaN_ = lambdaN_;
+}
+
+void ContactPair::restoreStep() {
+  state_ = stepStartState_;
+  lambdaN_ = stepStartLambdaN_;
+  searched_ = false;
+}
+
+void ContactPair::searchAndIntegrate(const Vector& u) {
+  const auto x = gather_->gather(u);
+  const auto& comm = *interface_->comm();
+  std::string failure;
+  NodalMortarQuantities local;
+  local.dimension = dim_;
+  local.withDerivatives = true;
+  try {
+    if (!searched_ || settings_.searchEveryIteration) {
+      radius_ = defaultSearchRadius(*interface_, x, settings_.searchRadiusFactor);
+      search_ = searchContactPairs(*interface_, x, radius_);
+      searched_ = true;
+    }
+    std::vector<int> needed = interface_->slaveNodesOfOwnedFaces();
+    needed.insert(needed.end(), interface_->ownedSlaveNodes().begin(), interface_->ownedSlaveNodes().end());
+    std::sort(needed.begin(), needed.end());
+    needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
+    normals_ = computeNodalNormals(*interface_, x, true, &needed);
+    local = integrateMortarPass(*interface_, x, normals_, search_, true);
+  } catch (const Error& e) {
+    failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();
+  }
+  throwIfAnyRankFailed(comm, failure);
+  mortar_ = sumToOwners(*interface_, local);
+}
+
+PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResidual, bool updateSet,
+                                         ContactContributions& out) {
+  searchAndIntegrate(u);
+  const bool alm = settings_.formulation == ContactFormulation::ALM;
+  const auto r = bulkResidual.getData(0);
+  const auto& map = *dofMap_;
+  auto row = [this](long long node, int c) { return static_cast<GlobalOrdinal>(dim_ * node + c); };
+  auto isPrescribed = [this](long long node, int c) {
+    const int i = interface_->interfaceNodeIndex(node);
+    return i >= 0 && prescribed_[i][c];
+  };
+  PairIterationSummary summary;
+  std::string failure;
+  const auto& slaveNodes = interface_->slaveNodes();
+  const auto& owned = interface_->ownedSlaveNodes();
+  const double t = thickness_;
+
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    const int s = owned[i];
+    const long long node = slaveNodes[s];
+    const ContactState previous = state_[i];
+    const NodalMortarEntry* entry = mortar_.find(node);
+    if (entry == nullptr || entry->D <= minimumD_) {
+      state_[i] = ContactState::Inactive;
+      lambdaN_[i] = pressure_[i] = 0;
+      ++summary.activeSet.nodes;
+      ++summary.activeSet.inactive;
+      if (previous != state_[i]) ++summary.activeSet.changed;
+      continue;
+    }
+    const double D = entry->D, gap = entry->gap;
+    const auto& n = normals_[s].n;
+    const auto& dn = normals_[s].derivative;
+    const Frame frame = frameOf(dim_, n, prescribed_[interface_->interfaceNodeIndex(node)]);
+
+    double lambdaN = 0;
+    ContactState state = previous;
+    if (alm) {
+      if (previous == ContactState::Active && frame.usable) {
+        double projected = 0;
+        for (int f = 0; f < frame.numFree; ++f) {
+          const int c = frame.free[f];
+          projected += frame.a[c] * r[map.getLocalElement(row(node, c))];
+        }
+        lambdaN = projected / (k_ * t * D * frame.normFree);
+      }
+      if (updateSet) state = almContactState(lambdaN, gap, D, k_, epsN_);
+      if (!frame.usable) state = ContactState::Inactive;
+      if (state == ContactState::Inactive) lambdaN = 0;
+    } else if (updateSet) {
+      state = penaltyContactState(gap);
+    }
+    state_[i] = state;
+    ++summary.activeSet.nodes;
+    if (state == ContactState::Active) ++summary.activeSet.active;
+    else ++summary.activeSet.inactive;
+    if (state != previous) ++summary.activeSet.changed;
+    if (state == ContactState::Active && gap / D < -radius_ && failure.empty()) {
+      std::ostringstream message;
+      message << "Contact/Pairs/" << settings_.name << ": slave node " << node + 1 << " penetrates the master by "
+              << -gap / D << ", more than the search radius " << radius_
+              << ": raise 'Search Radius Factor' or use more load steps";
+      failure = message.str();
+    }
+
+    // Slave force f_j (acting on the slave body) and the nodal pressure.
+    std::array<double, 3> force{};
+    if (alm) {
+      lambdaN_[i] = lambdaN;
+      pressure_[i] = -k_ * lambdaN;
+      for (int c = 0; c < dim_; ++c) force[c] = k_ * t * D * lambdaN * n[c];
+    } else {
+      pressure_[i] = state == ContactState::Active ? epsN_ * std::max(-gap, 0.0) / D : 0.0;
+      lambdaN_[i] = -pressure_[i] / k_;
+      for (int c = 0; c < dim_; ++c) force[c] = -pressure_[i] * t * D * n[c];
+    }
+    if (state != ContactState::Active) continue;
+    for (int c = 0; c < dim_; ++c) {
+      summary.slaveForce[c] += force[c];
+      summary.contactForce2 += force[c] * force[c];
+    }
+
+    // Derivative rows (d/dx of node, component) with prescribed columns left out.
+    auto emitRow = [&](std::vector<linalg::MatrixTriplet>& target, GlobalOrdinal targetRow,
+                       const std::map<DofKey, double>& values) {
+      for (const auto& [key, value] : values)
+        if (!isPrescribed(key.first, key.second) && value != 0.0)
+          target.push_back({targetRow, row(key.first, key.second), value});
+    };
+    auto addScaled = [](std::map<DofKey, double>& to, const DerivativeRow& from, double scale) {
+      for (const auto& [key, value] : from) to[key] += scale * value;
+    };
+    auto addNormal = [&dn](std::map<DofKey, double>& to, int component, double scale) {
+      for (const auto& d : dn) to[{d.node, d.component}] += scale * d.dn[component];
+    };
+
+    if (alm) {
+      // T - I on the slave rows: the gap slot is emptied, the b rows replace the others.
+      out.transform.push_back({row(node, frame.gapSlot), row(node, frame.gapSlot), -1.0});
+      for (int f = 0; f < frame.numFree; ++f) {
+        const int slot = frame.free[f];
+        if (slot == frame.gapSlot) continue;
+        out.transform.push_back({row(node, slot), row(node, slot), -1.0});
+        for (int g = 0; g < frame.numFree; ++g)
+          out.transform.push_back({row(node, slot), row(node, frame.free[g]), frame.b[slot][frame.free[g]]});
+      }
+      // T - I on the master rows: + M_jl n_c / (D |n_F|) × the a-row of j.
+      for (const auto& [master, Mjl] : entry->M)
+        for (int c = 0; c < dim_; ++c) {
+          if (isPrescribed(master, c)) continue;
+          const double scale = Mjl * n[c] / (D * frame.normFree);
+          for (int g = 0; g < frame.numFree; ++g)
+            out.transform.push_back({row(master, c), row(node, frame.free[g]), scale * frame.a[frame.free[g]]});
+        }
+      // The gap row: sign eps_n t g~_j and its derivative.
+      const double scale = frame.gapRowSign * epsN_ * t;
+      out.constraintResidual.push_back({row(node, frame.gapSlot), scale * gap});
+      std::map<DofKey, double> gapRow;
+      addScaled(gapRow, entry->dGap, scale);
+      emitRow(out.constraint, row(node, frame.gapSlot), gapRow);
+      summary.normalResidual2 += (epsN_ * t * gap) * (epsN_ * t * gap);
+      // K_c = -d f_c / dx with lambda_n frozen: slave f_j = k t lambda_n D n, master f_l = -k t lambda_n M_jl n.
+      if (lambdaN != 0.0) {
+        const double kl = k_ * t * lambdaN;
+        for (int c = 0; c < dim_; ++c) {
+          if (isPrescribed(node, c)) continue;
+          std::map<DofKey, double> values;
+          addScaled(values, entry->dD, -kl * n[c]);
+          addNormal(values, c, -kl * D);
+          emitRow(out.contactStiffness, row(node, c), values);
+        }
+        for (const auto& [master, Mjl] : entry->M)
+          for (int c = 0; c < dim_; ++c) {
+            if (isPrescribed(master, c)) continue;
+            std::map<DofKey, double> values;
+            const auto dM = entry->dM.find(master);
+            if (dM != entry->dM.end()) addScaled(values, dM->second, kl * n[c]);
+            addNormal(values, c, kl * Mjl);
+            emitRow(out.contactStiffness, row(master, c), values);
+          }
+      }
+    } else {
+      // Penalty (4.71a): residual -f, K_c = -df/dx through g~, n, D and M.
+      auto penaltyRows = [&](long long target, const NodalForce<3>& f, const DerivativeRow* dM) {
+        for (int c = 0; c < dim_; ++c) {
+          if (isPrescribed(target, c)) continue;
+          out.contactResidual.push_back({row(target, c), -t * f.f[c]});
+          std::map<DofKey, double> values;
+          addScaled(values, entry->dGap, -t * f.dGap[c]);
+          addScaled(values, entry->dD, -t * f.dD[c]);
+          if (dM) addScaled(values, *dM, -t * f.dM[c]);
+          for (int m = 0; m < dim_; ++m) addNormal(values, m, -t * f.dNormal[c][m]);
+          emitRow(out.contactStiffness, row(target, c), values);
+        }
+      };
+      const NVec<3> n3{n[0], n[1], dim_ == 3 ? n[2] : 0.0};
+      penaltyRows(node, penaltySlaveForce<3>(n3, gap, epsN_), nullptr);
+      for (const auto& [master, Mjl] : entry->M) {
+        const auto dM = entry->dM.find(master);
+        penaltyRows(master, penaltyMasterForce<3>(n3, gap, D, Mjl, epsN_),
+                    dM != entry->dM.end() ? &dM->second : nullptr);
+      }
+    }
+  }
+  throwIfAnyRankFailed(*interface_->comm(), failure);
+
+  // Sum over ranks.
+  const auto& comm = *interface_->comm();
+  double values[6] = {summary.normalResidual2, summary.contactForce2, summary.slaveForce[0], summary.slaveForce[1],
+                      summary.slaveForce[2], 0};
+  double totals[6];
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 6, values, totals);
+  summary.normalResidual2 = totals[0];
+  summary.contactForce2 = totals[1];
+  for (int c = 0; c < 3; ++c) summary.slaveForce[c] = totals[2 + c];
+  long long counts[4] = {static_cast<long long>(summary.activeSet.nodes), static_cast<long long>(summary.activeSet.active),
+                         static_cast<long long>(summary.activeSet.inactive),
+                         static_cast<long long>(summary.activeSet.changed)};
+  long long countTotals[4];
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 4, counts, countTotals);
+  summary.activeSet.nodes = countTotals[0];
+  summary.activeSet.active = countTotals[1];
+  summary.activeSet.inactive = countTotals[2];
+  summary.activeSet.changed = countTotals[3];
+  return summary;
+}
+
+std::vector<ContactPair::NodeOutput> ContactPair::nodeOutput() const {
+  std::vector<NodeOutput> out;
+  const auto& owned = interface_->ownedSlaveNodes();
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    NodeOutput o;
+    o.node = interface_->slaveNodes()[owned[i]];
+    o.state = state_[i];
+    o.pressure = pressure_[i];
+    if (const NodalMortarEntry* entry = mortar_.find(o.node)) {
+      o.weightedGap = entry->gap;
+      o.gap = entry->D > minimumD_ ? entry->gap / entry->D : 0.0;
+    }
+    if (static_cast<std::size_t>(owned[i]) < normals_.size()) o.normal = normals_[owned[i]].n;
+    for (int c = 0; c < 3; ++c) o.multiplier[c] = lambdaN_[i] * o.normal[c];
+    out.push_back(o);
+  }
+  return out;
+}
+
+}  // namespace coulomb::contact

@@ -1,0 +1,113 @@
+#pragma once
+/// @file ContactPair.hpp
+/// @brief One contact pair at run time: its interface, search, nodal normals,
+/// mortar pass, the state of its owned slave nodes (active set, normal
+/// multiplier), and its contributions to the condensed Newton system.
+///
+/// The system (docs/architecture.md, "Contact in the Newton system"):
+///   F(u) = T (r(u) - f_c) + g,       J = T (K + K_c) + G,
+/// r, K the bulk residual and tangent, f_c the contact forces acting on the
+/// bodies, K_c = -d f_c / d u, and for ALM pairs
+///   T = I + (row recombination of CondensationFrame, and the master rows
+///       += M_jl n_j,c / (D_j |n_F|) × the a-row of slave node j),
+///   g, G  = the scaled weighted gap sign ε_n t g~_j and its derivative, in
+///           the gap slot of each active slave node,
+/// so that the multipliers never appear: T f_c = 0 identically for ALM (the
+/// condensation of the dual multipliers, D diagonal), and lambda_n is
+/// recovered from the slave rows of the bulk residual,
+///   lambda_n,j = a_j . r_{j,F} / (k t D_j |n_F|)   (equilibrium of the a-row).
+/// Penalty pairs: T = I, f_c = the penalty forces of NodalContactLaw.
+/// t is the 2D thickness (1 in 3D): contact forces scale like the bulk.
+///
+/// Prescribed DoFs keep their identity rows (nothing is added to them) and
+/// are left out as columns (the bulk tangent zeroes those columns too).
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "coulomb/contact/ActiveSet.hpp"
+#include "coulomb/contact/ContactInterface.hpp"
+#include "coulomb/contact/ContactSearch.hpp"
+#include "coulomb/contact/ContactSettings.hpp"
+#include "coulomb/contact/MortarPass.hpp"
+#include "coulomb/core/TpetraTypes.hpp"
+#include "coulomb/fem/ModelSettings.hpp"
+#include "coulomb/linalg/TripletAssembly.hpp"
+
+namespace coulomb::contact {
+
+/// @brief Contributions of one or more pairs to the condensed system.
+struct ContactContributions {
+  std::vector<linalg::MatrixTriplet> transform;   ///< T - I
+  std::vector<linalg::MatrixTriplet> constraint;  ///< G
+  std::vector<linalg::VectorEntry> constraintResidual;  ///< g
+  std::vector<linalg::MatrixTriplet> contactStiffness;  ///< K_c
+  std::vector<linalg::VectorEntry> contactResidual;     ///< -f_c (penalty pairs)
+};
+
+/// @brief Per-update figures of one pair, summed over ranks.
+struct PairIterationSummary {
+  ActiveSetSummary activeSet;
+  double normalResidual2 = 0;  ///< sum of (eps_n t g~_j)^2 over active ALM nodes
+  double contactForce2 = 0;    ///< sum of |f_j|^2 over active slave nodes
+  std::array<double, 3> slaveForce{};  ///< total contact force on the slave body
+};
+
+class ContactPair {
+public:
+  /// Collective. `youngsModulus`: the largest E of the two bodies (automatic
+  /// penalty); `thickness`: the slave block's 2D thickness (1 in 3D).
+  ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& ownedDofMap, const ContactPairSettings& settings,
+              const fem::ModelSettings& model);
+  ~ContactPair();
+
+  const ContactPairSettings& settings() const { return settings_; }
+  const ContactInterface& interface() const { return *interface_; }
+  double penalty() const { return epsN_; }
+
+  /// A new load step: the next update searches; the state is saved for restoreStep().
+  void beginStep();
+  /// The step failed (cutback): back to the state saved by beginStep().
+  void restoreStep();
+
+  /// Collective: contact quantities at displacement `u` (owned map) with bulk
+  /// residual `bulkResidual` (same map; used to recover lambda_n), active-set
+  /// update when `updateSet`, and the contributions appended to `out`.
+  /// Throws coulomb::Error (every rank) when a node penetrates deeper than
+  /// the search radius.
+  PairIterationSummary update(const Vector& u, const Vector& bulkResidual, bool updateSet,
+                              ContactContributions& out);
+
+  /// Per owned slave node (ContactInterface::ownedSlaveNodes() order).
+  struct NodeOutput {
+    long long node = -1;
+    double pressure = 0, weightedGap = 0, gap = 0;
+    std::array<double, 3> normal{}, multiplier{};
+    ContactState state = ContactState::Inactive;
+  };
+  std::vector<NodeOutput> nodeOutput() const;
+
+private:
+  void searchAndIntegrate(const Vector& u);
+
+  const mesh::Mesh& mesh_;
+  Teuchos::RCP<const Map> dofMap_;
+  ContactPairSettings settings_;
+  std::unique_ptr<ContactInterface> interface_;
+  std::unique_ptr<InterfaceGather> gather_;
+  int dim_;
+  double epsN_ = 0, k_ = 1, thickness_ = 1, radius_ = 0, minimumD_ = 0;
+  /// prescribed_[i][c]: component c of interface node i is a Dirichlet DoF.
+  std::vector<std::array<bool, 3>> prescribed_;
+  bool searched_ = false;
+  SearchResult search_;
+  std::vector<NodalNormal> normals_;  ///< by slave node index
+  NodalMortarQuantities mortar_;      ///< owned slave nodes
+  // State of the owned slave nodes (ownedSlaveNodes() order).
+  std::vector<ContactState> state_, stepStartState_;
+  std::vector<double> lambdaN_, stepStartLambdaN_;
+  std::vector<double> pressure_;
+};
+
+}  // namespace coulomb::contact

@@ -1,0 +1,56 @@
+#pragma once
+/// @file ContactSettings.hpp
+/// @brief The deck's "Contact" sublist as typed values: the contact pairs
+/// (slave and master side sets, formulation, penalty, scale factor,
+/// semi-smooth Newton mode, search) and the contact convergence tolerances.
+#include <string>
+#include <vector>
+
+namespace Teuchos {
+class ParameterList;
+}
+
+namespace coulomb::contact {
+
+/// ALM: Lagrange multipliers on the slave nodes, condensed (exact
+/// non-penetration at convergence). Penalty: displacement only, pressure
+/// eps_n <-g~> / D (penetration ~ p / eps_n).
+enum class ContactFormulation { ALM, Penalty };
+
+/// Full: the active set is updated at every Newton iteration. Simplified:
+/// only at the first two evaluations of a load step (the predictor and the
+/// first iterate), then frozen for the rest of the step.
+enum class SemiSmoothNewton { Full, Simplified };
+
+/// @brief One contact pair.
+struct ContactPairSettings {
+  std::string name;    ///< the deck sublist name (messages, output variable names)
+  std::string slave;   ///< slave side set (the finer / curved side)
+  std::string master;  ///< master side set
+  ContactFormulation formulation = ContactFormulation::ALM;
+  double penalty = 0.0;        ///< eps_n [force/length^3]; 0: automatic, penaltyFactor × E / h
+  double penaltyFactor = 1.0;  ///< factor of the automatic penalty
+  double scaleFactor = 1.0;    ///< k of the ALM (lambda = traction / k)
+  SemiSmoothNewton semiSmooth = SemiSmoothNewton::Full;
+  bool searchEveryIteration = false;  ///< else once per load step
+  double searchRadiusFactor = 1.0;    ///< radius = factor × largest slave face diameter
+};
+
+/// @brief Everything about contact in a deck.
+struct ContactSettings {
+  std::vector<ContactPairSettings> pairs;
+  /// Normal constraint residual ||eps_n g~||: converged when below
+  /// relativeTolerance × ||contact forces|| + absoluteTolerance.
+  double normalRelativeTolerance = 1e-6;
+  double normalAbsoluteTolerance = 1e-8;
+};
+
+/// @brief Valid parameters of "Contact" (added to the deck's list).
+void addValidContactParameters(Teuchos::ParameterList& valid);
+
+/// @brief Typed settings of a validated deck (no "Contact" sublist: no pairs).
+ContactSettings parseContactSettings(const Teuchos::ParameterList& deck);
+
+const char* toString(ContactFormulation formulation);
+
+}  // namespace coulomb::contact

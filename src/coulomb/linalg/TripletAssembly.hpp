@@ -1,0 +1,42 @@
+#pragma once
+/// @file TripletAssembly.hpp
+/// @brief Sparse contributions given as (row, column, value) triplets by any
+/// rank, summed on the owner of the row into a Tpetra matrix or vector.
+///
+/// Why not an overlap matrix and a Tpetra Export: the contact contributions
+/// change their pattern with every search and active-set change, and a
+/// Tpetra 13.2 CrsMatrix cannot grow rows past its allocation; so the
+/// triplets are shipped to the row owners first (one MPI_Alltoallv), each
+/// owner counts its rows exactly and builds a fresh, fill-completed matrix.
+#include <vector>
+
+#include <Teuchos_RCP.hpp>
+
+#include "coulomb/core/TpetraTypes.hpp"
+
+namespace coulomb::linalg {
+
+/// One matrix contribution A(row, column) += value (global indices).
+struct MatrixTriplet {
+  GlobalOrdinal row = 0;
+  GlobalOrdinal column = 0;
+  double value = 0.0;
+};
+
+/// One vector contribution v(row) += value (global index).
+struct VectorEntry {
+  GlobalOrdinal row = 0;
+  double value = 0.0;
+};
+
+/// @brief Collective: the square matrix with row, domain and range map
+/// `map` (one-to-one) holding the sum of every rank's `triplets`.
+/// Duplicates are added; explicit zeros are kept (the pattern is what was
+/// given). Throws coulomb::Error (on every rank) if a row is not in `map`.
+Teuchos::RCP<CrsMatrix> matrixFromTriplets(const std::vector<MatrixTriplet>& triplets,
+                                           const Teuchos::RCP<const Map>& map);
+
+/// @brief Collective: adds every rank's `entries` into `owned` (on its map).
+void addEntries(const std::vector<VectorEntry>& entries, Vector& owned);
+
+}  // namespace coulomb::linalg
