@@ -28,20 +28,29 @@ std::vector<double> toOwners(const std::vector<double>& records, int width, cons
   const auto& comm = *map.getComm();
   const int size = comm.getSize();
   const std::size_t n = records.size() / width;
-  std::vector<GlobalOrdinal> rows(n);
-  for (std::size_t i = 0; i < n; ++i) rows[i] = static_cast<GlobalOrdinal>(records[i * width]);
-  std::vector<int> owners(n, -1);
-  std::vector<LocalOrdinal> locals(n);
-  const auto lookup = map.getRemoteIndexList(Teuchos::ArrayView<const GlobalOrdinal>(rows.data(), n),
-                                             Teuchos::ArrayView<int>(owners.data(), n),
-                                             Teuchos::ArrayView<LocalOrdinal>(locals.data(), n));
+  // The owner of each distinct row, looked up once (Tpetra's directory is
+  // given a sorted list without duplicates). One extra, valid index on every
+  // rank: Map::getRemoteIndexList returns at once for an empty list, skipping
+  // the collective set-up of its directory that the ranks with entries do —
+  // a rank without contributions would then desynchronise the others.
+  std::vector<GlobalOrdinal> distinct;
+  distinct.reserve(n + 1);
+  for (std::size_t i = 0; i < n; ++i) distinct.push_back(static_cast<GlobalOrdinal>(records[i * width]));
+  distinct.push_back(map.getMinAllGlobalIndex());
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  std::vector<int> distinctOwners(distinct.size(), -1);
+  std::vector<LocalOrdinal> locals(distinct.size());
+  map.getRemoteIndexList(Teuchos::ArrayView<const GlobalOrdinal>(distinct.data(), distinct.size()),
+                         Teuchos::ArrayView<int>(distinctOwners.data(), distinct.size()),
+                         Teuchos::ArrayView<LocalOrdinal>(locals.data(), distinct.size()));
+  std::vector<int> owners(n);
   std::string failure;
-  if (lookup != Tpetra::AllIDsPresent) {
-    for (std::size_t i = 0; i < n; ++i)
-      if (owners[i] < 0) {
-        failure = "internal: contribution to row " + std::to_string(rows[i]) + " outside the DoF map";
-        break;
-      }
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto row = static_cast<GlobalOrdinal>(records[i * width]);
+    owners[i] = distinctOwners[std::lower_bound(distinct.begin(), distinct.end(), row) - distinct.begin()];
+    if ((owners[i] < 0 || owners[i] >= size) && failure.empty())
+      failure = "internal: contribution to row " + std::to_string(row) + " outside the DoF map";
   }
   throwIfAnyRankFailed(comm, failure);
   if (size == 1) return records;

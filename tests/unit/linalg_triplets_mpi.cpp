@@ -1,0 +1,77 @@
+// TripletAssembly: contributions from any rank end up, summed, on the row owner.
+#include <gtest/gtest.h>
+
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "TestSupport.hpp"
+#include "coulomb/linalg/TripletAssembly.hpp"
+
+namespace coulomb::test {
+
+TEST(TripletAssembly, EveryRankAddsToEveryRowAndTheOwnerHoldsTheSum) {
+  auto comm = worldComm();
+  const int size = comm->getSize(), rank = comm->getRank();
+  const GlobalOrdinal n = 7 * size + 3;  // rows spread unevenly
+  auto map = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(n), 0, comm));
+  // Every rank adds (rank + 1) to A(i, i) and 1 to A(i, (i + 1) % n), and 2 to v(i).
+  std::vector<linalg::MatrixTriplet> triplets;
+  std::vector<linalg::VectorEntry> entries;
+  for (GlobalOrdinal i = 0; i < n; ++i) {
+    triplets.push_back({i, i, double(rank + 1)});
+    triplets.push_back({i, (i + 1) % n, 1.0});
+    entries.push_back({i, 2.0});
+  }
+  auto matrix = linalg::matrixFromTriplets(triplets, map);
+  Vector v(map);
+  linalg::addEntries(entries, v);
+  const double diagonal = size * (size + 1) / 2.0;
+  // A x with x = 1 gives diagonal + size on every row.
+  Vector ones(map), product(map);
+  ones.putScalar(1.0);
+  matrix->apply(ones, product);
+  const auto p = product.getData(0);
+  const auto values = v.getData(0);
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
+    EXPECT_DOUBLE_EQ(p[i], diagonal + size);
+    EXPECT_DOUBLE_EQ(values[i], 2.0 * size);
+  }
+  EXPECT_EQ(matrix->getGlobalNumEntries(), static_cast<Tpetra::global_size_t>(2 * n));
+}
+
+TEST(TripletAssembly, NoContributionsGiveAnEmptyMatrix) {
+  auto comm = worldComm();
+  auto map = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(5), 0, comm));
+  auto matrix = linalg::matrixFromTriplets({}, map);
+  EXPECT_EQ(matrix->getGlobalNumEntries(), 0u);
+}
+
+}  // namespace coulomb::test
+
+namespace coulomb::test {
+
+// Regression: a rank without contributions must not desynchronise the others
+// (Tpetra's owner lookup skips a collective set-up for an empty list).
+TEST(TripletAssembly, OnlyOneRankContributes) {
+  auto comm = worldComm();
+  const int size = comm->getSize();
+  const GlobalOrdinal n = 4 * size;
+  auto map = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(n), 0, comm));
+  for (int repeat = 0; repeat < 2; ++repeat) {
+    std::vector<linalg::MatrixTriplet> triplets;
+    std::vector<linalg::VectorEntry> entries;
+    if (comm->getRank() == size - 1)
+      for (GlobalOrdinal i = 0; i < n; ++i) {
+        triplets.push_back({i, n - 1 - i, 3.0});
+        entries.push_back({i, 1.5});
+      }
+    auto matrix = linalg::matrixFromTriplets(triplets, map);
+    Vector v(map);
+    linalg::addEntries(entries, v);
+    EXPECT_EQ(matrix->getGlobalNumEntries(), static_cast<Tpetra::global_size_t>(n));
+    EXPECT_DOUBLE_EQ(v.norm1(), 1.5 * n);
+  }
+}
+
+}  // namespace coulomb::test
