@@ -15,8 +15,9 @@
 namespace {
 
 void usage(std::ostream& out) {
-  out << "usage: coulomb DECK.xml [-o RESULT.e]   run an input deck (result: the deck's Output/File,\n"
-         "                                        or DECK.e next to the deck; -o overrides it)\n"
+  out << "usage: coulomb DECK.xml [-o RESULT.e] [-m|--mesh MESH.e]\n"
+         "                                    run an input deck (result: the deck's Output/File, or DECK.e\n"
+         "                                    next to the deck; -o overrides it; --mesh replaces Mesh/File)\n"
          "       coulomb --help-deck         list every deck parameter (type, default, doc)\n"
          "       mpirun -np N coulomb DECK.xml\n";
 }
@@ -27,12 +28,20 @@ int main(int argc, char** argv) {
   Tpetra::ScopeGuard tpetra(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;
-  const bool withOutput = argc == 4 && std::string(argv[2]) == "-o";
-  if (argc != 2 && !withOutput) {
+  if (argc < 2) {
     if (root) usage(std::cerr);
     return 2;
   }
   const std::string argument = argv[1];
+  std::string output, mesh;
+  for (int i = 2; i < argc; i += 2) {
+    const std::string option = argv[i];
+    if (i + 1 >= argc || (option != "-o" && option != "--mesh" && option != "-m")) {
+      if (root) usage(std::cerr);
+      return 2;
+    }
+    (option == "-o" ? output : mesh) = argv[i + 1];
+  }
   if (argument == "--help" || argument == "-h") {
     if (root) usage(std::cout);
     return 0;
@@ -42,7 +51,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   try {
-    coulomb::solver::Simulation simulation(argument, comm, &std::cout, withOutput ? argv[3] : "");
+    coulomb::solver::Simulation simulation(argument, comm, &std::cout, output, mesh);
     simulation.run();
   } catch (const coulomb::Error& e) {
     // Every rank throws the same coulomb::Error (see core/Parallel.hpp); one prints it.

@@ -42,14 +42,15 @@ void ContactModel::restoreStep() {
   for (auto& pair : pairs_) pair->restoreStep();
 }
 
-void ContactModel::update(const Vector& u, const Vector& bulkResidual) {
+void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool freezeSet) {
   contributions_ = ContactContributions();
   summary_ = ContactIterationSummary();
   double normal2 = 0, force2 = 0;
   bool anyUpdated = false;
   for (std::size_t p = 0; p < pairs_.size(); ++p) {
     // Simplified semi-smooth Newton: the set moves at the predictor and the first iterate only.
-    const bool updateSet = pairs_[p]->settings().semiSmooth == SemiSmoothNewton::Full || updatesInStep_ < 2;
+    const bool updateSet =
+        !freezeSet && (pairs_[p]->settings().semiSmooth == SemiSmoothNewton::Full || updatesInStep_ < 2);
     anyUpdated = anyUpdated || updateSet;
     pairSummaries_[p] = pairs_[p]->update(u, bulkResidual, updateSet, contributions_);
     summary_.activeSet += pairSummaries_[p].activeSet;

@@ -48,8 +48,9 @@ public:
   void restoreStep();
 
   /// Collective: contact state at `u` with bulk residual `bulkResidual`,
-  /// contributions stored for the two calls below.
-  void update(const Vector& u, const Vector& bulkResidual);
+  /// contributions stored for the two calls below. `freezeSet`: keep the
+  /// active set whatever the semi-smooth Newton mode says (derivative checks).
+  void update(const Vector& u, const Vector& bulkResidual, bool freezeSet = false);
   /// residual := T (residual - f_c) + g   (residual: the bulk residual of the same u).
   void condenseResidual(Vector& residual) const;
   /// J = T (K + K_c) + G as a new matrix (K unchanged); K itself when no pair contributes.

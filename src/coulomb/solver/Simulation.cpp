@@ -59,13 +59,14 @@ struct Simulation::Solvers {
 };
 
 Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teuchos::Comm<int>>& comm,
-                       std::ostream* console, const std::string& outputOverride)
+                       std::ostream* console, const std::string& outputOverride, const std::string& meshOverride)
     : comm_(comm), console_(comm->getRank() == 0 ? console : nullptr) {
   // Every rank reads the deck and the mesh itself (no broadcast needed): the
   // same files give the same errors everywhere, so all ranks fail together.
   const auto deck = readDeck(deckPath);
   settings_ = parseRunSettings(*deck, deckPath);
   if (!outputOverride.empty()) settings_.outputFile = outputOverride;
+  if (!meshOverride.empty()) settings_.meshFile = meshOverride;
   auto global = std::make_shared<mesh::GlobalMesh>(io::readExodus(settings_.meshFile));
   const auto model = fem::parseModelSettings(*deck, global->dimension);
   mesh_ = std::make_unique<mesh::Mesh>(global, comm_);
@@ -198,9 +199,13 @@ RunSummary Simulation::run() {
     std::vector<double> norms;
     for (const auto& row : report.iterations) norms.push_back(row.residualNorm);
     summary.stepResidualNorms.push_back(norms);
-    std::vector<long long> active;
-    for (const auto& row : report.iterations) active.push_back(row.activeNodes);
+    std::vector<long long> active, changed;
+    for (const auto& row : report.iterations) {
+      active.push_back(row.activeNodes);
+      changed.push_back(row.changedNodes);
+    }
     summary.stepActiveNodes.push_back(active);
+    summary.stepChangedNodes.push_back(changed);
     writeStep(time, {double(iterations), double(report.linearIterations()), double(summary.cutbacks)});
     if (console_)
       *console_ << "  step " << summary.steps << " converged: t = " << time << ", " << iterations << " Newton / "

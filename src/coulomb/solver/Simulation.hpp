@@ -39,15 +39,17 @@ struct RunSummary {
   std::vector<int> stepNewtonIterations;
   std::vector<std::vector<double>> stepResidualNorms;  ///< Newton residual sequence per converged step
   std::vector<std::vector<long long>> stepActiveNodes;   ///< contact: active nodes per Newton iteration
+  std::vector<std::vector<long long>> stepChangedNodes;  ///< contact: nodes that changed state, per iteration
 };
 
 class Simulation {
 public:
   /// Reads and validates the deck and the mesh, builds all components.
   /// Collective; throws coulomb::Error on every rank on bad input.
-  /// `outputOverride` (if not empty) replaces the deck's "Output/File".
+  /// `outputOverride` (if not empty) replaces the deck's "Output/File",
+  /// `meshOverride` its "Mesh/File" (both as given, relative to the caller).
   Simulation(const std::string& deckPath, const Teuchos::RCP<const Teuchos::Comm<int>>& comm, std::ostream* console,
-             const std::string& outputOverride = "");
+             const std::string& outputOverride = "", const std::string& meshOverride = "");
   ~Simulation();
 
   /// Runs all load steps and writes the result. Collective.
@@ -63,7 +65,7 @@ public:
   /// Total reaction force per component on the named node set at the last step.
   std::vector<double> reactionTotal(const std::string& nodeSet) const;
   /// The contact model (null without a "Contact" sublist with pairs).
-  const contact::ContactModel* contact() const { return contact_.get(); }
+  contact::ContactModel* contact() { return contact_.get(); }
 
 private:
   struct Solvers;
