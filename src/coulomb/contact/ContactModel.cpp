@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include <Teuchos_TimeMonitor.hpp>
 #include <TpetraExt_MatrixMatrix.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
@@ -43,6 +44,8 @@ void ContactModel::restoreStep() {
 }
 
 void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool freezeSet) {
+  static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact update");
+  Teuchos::TimeMonitor scope(*timer);
   contributions_ = ContactContributions();
   summary_ = ContactIterationSummary();
   double normal2 = 0, force2 = 0;
@@ -68,16 +71,10 @@ void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool free
   contributes_ = anyRank(*map_->getComm(), local);
   transform_ = constraint_ = stiffness_ = Teuchos::null;
   if (!contributes_) return;
-  // T = I + (T - I): the identity on the owned rows, then the pairs' entries.
-  std::vector<linalg::MatrixTriplet> transform;
-  const std::size_t numLocal = map_->getNodeNumElements();
-  transform.reserve(numLocal + contributions_.transform.size());
-  for (std::size_t i = 0; i < numLocal; ++i) {
-    const GlobalOrdinal gid = map_->getGlobalElement(static_cast<LocalOrdinal>(i));
-    transform.push_back({gid, gid, 1.0});
-  }
-  transform.insert(transform.end(), contributions_.transform.begin(), contributions_.transform.end());
-  transform_ = linalg::matrixFromTriplets(transform, map_);
+  static const auto matrices = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact matrices from triplets");
+  Teuchos::TimeMonitor matricesScope(*matrices);
+  // T - I: only rows of the interface (the identity part is never formed).
+  transform_ = linalg::matrixFromTriplets(contributions_.transform, map_);
   constraint_ = linalg::matrixFromTriplets(contributions_.constraint, map_);
   stiffness_ = linalg::matrixFromTriplets(contributions_.contactStiffness, map_);
 }
@@ -86,16 +83,24 @@ void ContactModel::condenseResidual(Vector& residual) const {
   if (!contributes_) return;
   linalg::addEntries(contributions_.contactResidual, residual);
   Vector copy(residual, Teuchos::Copy);
-  transform_->apply(copy, residual);
+  transform_->apply(copy, residual, Teuchos::NO_TRANS, 1.0, 1.0);  // residual += (T - I) residual
   linalg::addEntries(contributions_.constraintResidual, residual);
 }
 
 Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMatrix>& bulkTangent) const {
   if (!contributes_) return bulkTangent;
-  auto tangent = Tpetra::MatrixMatrix::add(1.0, false, *bulkTangent, 1.0, false, *stiffness_);
-  auto product = Teuchos::rcp(new CrsMatrix(map_, 0));
-  Tpetra::MatrixMatrix::Multiply(*transform_, false, *tangent, false, *product);
-  return Tpetra::MatrixMatrix::add(1.0, false, *product, 1.0, false, *constraint_);
+  static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact condensed tangent");
+  Teuchos::TimeMonitor scope(*timer);
+  // J = T (K + K_c) + G = K + [K_c + G + (T - I) K + (T - I) K_c]: every term
+  // in brackets lives on interface rows only, so the one operation on the
+  // size of K is the final sum.
+  auto interfaceRows = Tpetra::MatrixMatrix::add(1.0, false, *stiffness_, 1.0, false, *constraint_);
+  for (const CrsMatrix* factor : {bulkTangent.get(), stiffness_.get()}) {
+    auto product = Teuchos::rcp(new CrsMatrix(map_, 0));
+    Tpetra::MatrixMatrix::Multiply(*transform_, false, *factor, false, *product);
+    interfaceRows = Tpetra::MatrixMatrix::add(1.0, false, *interfaceRows, 1.0, false, *product);
+  }
+  return Tpetra::MatrixMatrix::add(1.0, false, *bulkTangent, 1.0, false, *interfaceRows);
 }
 
 bool ContactModel::converged() const {

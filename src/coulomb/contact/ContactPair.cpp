@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
@@ -141,33 +142,76 @@ void ContactPair::restoreStep() {
 }
 
 void ContactPair::searchAndIntegrate(const Vector& u) {
-  const auto x = gather_->gather(u);
-  const auto& comm = *interface_->comm();
+  static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact search and mortar values");
+  Teuchos::TimeMonitor scope(*timer);
+  x_ = gather_->gather(u);
   std::string failure;
   NodalMortarQuantities local;
-  local.dimension = dim_;
-  local.withDerivatives = true;
   try {
     if (!searched_ || settings_.searchEveryIteration) {
-      radius_ = defaultSearchRadius(*interface_, x, settings_.searchRadiusFactor);
-      search_ = searchContactPairs(*interface_, x, radius_);
+      radius_ = defaultSearchRadius(*interface_, x_, settings_.searchRadiusFactor);
+      search_ = searchContactPairs(*interface_, x_, radius_);
       searched_ = true;
     }
     std::vector<int> needed = interface_->slaveNodesOfOwnedFaces();
     needed.insert(needed.end(), interface_->ownedSlaveNodes().begin(), interface_->ownedSlaveNodes().end());
     std::sort(needed.begin(), needed.end());
     needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
-    normals_ = computeNodalNormals(*interface_, x, true, &needed);
-    local = integrateMortarPass(*interface_, x, normals_, search_, true);
+    normals_ = computeNodalNormals(*interface_, x_, false, &needed);
+    local = integrateMortarPass(*interface_, x_, normals_, search_, false);
   } catch (const Error& e) {
     failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();
   }
-  throwIfAnyRankFailed(comm, failure);
+  throwIfAnyRankFailed(*interface_->comm(), failure);
   mortar_ = sumToOwners(*interface_, local);
+}
+
+void ContactPair::differentiateActive() {
+  static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact mortar derivatives");
+  Teuchos::TimeMonitor scope(*timer);
+  // Which slave nodes are active anywhere: one flag per slave node, max over ranks.
+  const auto& slaveNodes = interface_->slaveNodes();
+  const auto& owned = interface_->ownedSlaveNodes();
+  std::vector<int> local(slaveNodes.size(), 0), active(slaveNodes.size(), 0);
+  for (std::size_t i = 0; i < owned.size(); ++i)
+    if (state_[i] == ContactState::Active) local[owned[i]] = 1;
+  Teuchos::reduceAll(*interface_->comm(), Teuchos::REDUCE_MAX, static_cast<int>(local.size()), local.data(),
+                     active.data());
+  // The searched slave faces with an active node: all the faces of an active
+  // node are there (its D, M, g~ derivatives are complete), no others.
+  SearchResult subset;
+  subset.radius = search_.radius;
+  std::vector<int> needed(owned.begin(), owned.end());
+  for (std::size_t k = 0; k < search_.slaveFaces.size(); ++k) {
+    const ContactFace& face = interface_->slaveFaces()[search_.slaveFaces[k]];
+    bool any = false;
+    for (int a = 0; a < face.numNodes; ++a) any = any || active[interface_->slaveNodeIndex(face.nodes[a])];
+    if (!any) continue;
+    subset.slaveFaces.push_back(search_.slaveFaces[k]);
+    subset.candidates.push_back(search_.candidates[k]);
+    for (int a = 0; a < face.numNodes; ++a) needed.push_back(interface_->slaveNodeIndex(face.nodes[a]));
+  }
+  std::sort(needed.begin(), needed.end());
+  needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
+  std::string failure;
+  NodalMortarQuantities partial;
+  partial.dimension = dim_;
+  partial.withDerivatives = true;
+  try {
+    normalDerivatives_ = computeNodalNormals(*interface_, x_, true, &needed);
+    partial = integrateMortarPass(*interface_, x_, normalDerivatives_, subset, true);
+  } catch (const Error& e) {
+    failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();
+  }
+  throwIfAnyRankFailed(*interface_->comm(), failure);
+  mortarDerivatives_ = sumToOwners(*interface_, partial);
 }
 
 PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResidual, bool updateSet,
                                          ContactContributions& out) {
+  // Stage 1 (values): search, normals, D, M, g~ of every slave node; the new
+  // active set. Stage 2 (derivatives, Sacado): only the faces around active
+  // nodes — the rest of a large slave surface costs a plain double pass.
   searchAndIntegrate(u);
   const bool alm = settings_.formulation == ContactFormulation::ALM;
   const auto r = bulkResidual.getData(0);
@@ -198,7 +242,6 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
     }
     const double D = entry->D, gap = entry->gap;
     const auto& n = normals_[s].n;
-    const auto& dn = normals_[s].derivative;
     const Frame frame = frameOf(dim_, n, prescribed_[interface_->interfaceNodeIndex(node)]);
 
     double lambdaN = 0;
@@ -230,19 +273,31 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
               << ": raise 'Search Radius Factor' or use more load steps";
       failure = message.str();
     }
-
-    // Slave force f_j (acting on the slave body) and the nodal pressure.
-    std::array<double, 3> force{};
     if (alm) {
       lambdaN_[i] = lambdaN;
       pressure_[i] = -k_ * lambdaN;
-      for (int c = 0; c < dim_; ++c) force[c] = k_ * t * D * lambdaN * n[c];
     } else {
       pressure_[i] = state == ContactState::Active ? epsN_ * std::max(-gap, 0.0) / D : 0.0;
       lambdaN_[i] = -pressure_[i] / k_;
-      for (int c = 0; c < dim_; ++c) force[c] = -pressure_[i] * t * D * n[c];
     }
-    if (state != ContactState::Active) continue;
+  }
+  throwIfAnyRankFailed(*interface_->comm(), failure);
+  differentiateActive();
+
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    if (state_[i] != ContactState::Active) continue;
+    const int s = owned[i];
+    const long long node = slaveNodes[s];
+    const NodalMortarEntry* entry = mortarDerivatives_.find(node);
+    if (entry == nullptr) continue;  // cannot happen: the node's faces were differentiated
+    const double D = entry->D, gap = entry->gap, lambdaN = lambdaN_[i];
+    const auto& n = normalDerivatives_[s].n;
+    const auto& dn = normalDerivatives_[s].derivative;
+    const Frame frame = frameOf(dim_, n, prescribed_[interface_->interfaceNodeIndex(node)]);
+
+    // Slave force f_j acting on the slave body.
+    std::array<double, 3> force{};
+    for (int c = 0; c < dim_; ++c) force[c] = alm ? k_ * t * D * lambdaN * n[c] : -pressure_[i] * t * D * n[c];
     for (int c = 0; c < dim_; ++c) {
       summary.slaveForce[c] += force[c];
       summary.contactForce2 += force[c] * force[c];
@@ -330,7 +385,6 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
       }
     }
   }
-  throwIfAnyRankFailed(*interface_->comm(), failure);
 
   // Sum over ranks.
   const auto& comm = *interface_->comm();

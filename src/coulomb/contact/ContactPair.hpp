@@ -90,6 +90,7 @@ public:
 
 private:
   void searchAndIntegrate(const Vector& u);
+  void differentiateActive();
 
   const mesh::Mesh& mesh_;
   Teuchos::RCP<const Map> dofMap_;
@@ -102,8 +103,12 @@ private:
   std::vector<std::array<bool, 3>> prescribed_;
   bool searched_ = false;
   SearchResult search_;
-  std::vector<NodalNormal> normals_;  ///< by slave node index
-  NodalMortarQuantities mortar_;      ///< owned slave nodes
+  InterfaceConfiguration x_;          ///< current interface coordinates (last update)
+  std::vector<NodalNormal> normals_;  ///< by slave node index, values
+  NodalMortarQuantities mortar_;      ///< owned slave nodes, values
+  /// The same with derivatives, for the active nodes (stage 2 of update()).
+  std::vector<NodalNormal> normalDerivatives_;
+  NodalMortarQuantities mortarDerivatives_;
   // State of the owned slave nodes (ownedSlaveNodes() order).
   std::vector<ContactState> state_, stepStartState_;
   std::vector<double> lambdaN_, stepStartLambdaN_;

@@ -180,12 +180,14 @@ void pair2D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
   const auto xs = faceCoordinates<F::value>(s, p.x);
   const auto ns = faceNormals<F::value>(s, p.contact, p.normals);
   const auto xm = faceCoordinates<F::value>(m, p.x);
-  if (p.withDerivatives) {
+  // Most candidate pairs of a search do not overlap: find out with plain
+  // doubles before paying for the derivatives (Sacado, 8-36 times the work).
+  if (p.withDerivatives && integrateSegment2D<double>(xs, ns, xm, p.tolerance).contributes) {
     const MortarSegment2DLinearization lin = linearizeSegment2D(xs, ns, xm, p.tolerance);
     if (!lin.value.contributes) return;
     const InputChain chain = buildChain(2, s, m, p.contact, p.normals);
     accumulate(lin.value, &lin, &chain, s, m, p.out);
-  } else {
+  } else if (!p.withDerivatives) {
     const MortarSegment2D<double> value = integrateSegment2D<double>(xs, ns, xm, p.tolerance);
     if (!value.contributes) return;
     accumulate(value, static_cast<const MortarSegment2DLinearization*>(nullptr), nullptr, s, m, p.out);
@@ -197,12 +199,12 @@ void pair3D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
   const auto xs = faceCoordinates<S>(s, p.x);
   const auto ns = faceNormals<S>(s, p.contact, p.normals);
   const auto xm = faceCoordinates<Mf>(m, p.x);
-  if (p.withDerivatives) {
+  if (p.withDerivatives && integrateSegment3D<S, Mf, double>(xs, ns, xm, p.tolerance).contributes) {
     const auto lin = linearizeSegment3D<S, Mf>(xs, ns, xm, p.tolerance);
     if (!lin.value.contributes) return;
     const InputChain chain = buildChain(3, s, m, p.contact, p.normals);
     accumulate(lin.value, &lin, &chain, s, m, p.out);
-  } else {
+  } else if (!p.withDerivatives) {
     const auto value = integrateSegment3D<S, Mf, double>(xs, ns, xm, p.tolerance);
     if (!value.contributes) return;
     accumulate(value, static_cast<const MortarSegment3DLinearization<S, Mf>*>(nullptr), nullptr, s, m, p.out);
