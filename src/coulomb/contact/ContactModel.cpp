@@ -1,14 +1,15 @@
 #include "coulomb/contact/ContactModel.hpp"
 
 #include <cmath>
+#include <unordered_map>
 
 #include <Teuchos_TimeMonitor.hpp>
-#include <TpetraExt_MatrixMatrix.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "coulomb/core/Error.hpp"
 #include "coulomb/core/Parallel.hpp"
 
 namespace coulomb::contact {
@@ -69,14 +70,13 @@ void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool free
                      !contributions_.constraint.empty() || !contributions_.contactResidual.empty() ||
                      !contributions_.constraintResidual.empty();
   contributes_ = anyRank(*map_->getComm(), local);
-  transform_ = constraint_ = stiffness_ = Teuchos::null;
+  transform_ = Teuchos::null;
   if (!contributes_) return;
   static const auto matrices = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact matrices from triplets");
   Teuchos::TimeMonitor matricesScope(*matrices);
   // T - I: only rows of the interface (the identity part is never formed).
   transform_ = linalg::matrixFromTriplets(contributions_.transform, map_);
-  constraint_ = linalg::matrixFromTriplets(contributions_.constraint, map_);
-  stiffness_ = linalg::matrixFromTriplets(contributions_.contactStiffness, map_);
+
 }
 
 void ContactModel::condenseResidual(Vector& residual) const {
@@ -94,13 +94,32 @@ Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMat
   // J = T (K + K_c) + G = K + [K_c + G + (T - I) K + (T - I) K_c]: every term
   // in brackets lives on interface rows only, so the one operation on the
   // size of K is the final sum.
-  auto interfaceRows = Tpetra::MatrixMatrix::add(1.0, false, *stiffness_, 1.0, false, *constraint_);
-  for (const CrsMatrix* factor : {bulkTangent.get(), stiffness_.get()}) {
-    auto product = Teuchos::rcp(new CrsMatrix(map_, 0));
-    Tpetra::MatrixMatrix::Multiply(*transform_, false, *factor, false, *product);
-    interfaceRows = Tpetra::MatrixMatrix::add(1.0, false, *interfaceRows, 1.0, false, *product);
+  //
+  // (T - I)(K + K_c) is formed here as triplets, without a distributed
+  // matrix product: every entry of T - I sits in a column of a slave node's
+  // DoF, emitted by the rank that owns that node (ContactPair::update), which
+  // also owns the node's rows of K and emitted its rows of K_c.
+  std::vector<linalg::MatrixTriplet> interfaceRows = contributions_.contactStiffness;
+  interfaceRows.insert(interfaceRows.end(), contributions_.constraint.begin(), contributions_.constraint.end());
+  std::unordered_map<GlobalOrdinal, std::vector<std::pair<GlobalOrdinal, double>>> stiffnessRows;
+  for (const auto& t : contributions_.contactStiffness) stiffnessRows[t.row].push_back({t.column, t.value});
+  const auto& columns = *bulkTangent->getColMap();
+  for (const auto& t : contributions_.transform) {
+    const LocalOrdinal row = map_->getLocalElement(t.column);
+    COULOMB_REQUIRE(row != Teuchos::OrdinalTraits<LocalOrdinal>::invalid(),
+                    "internal: a condensation coefficient refers to a DoF this rank does not own");
+    Teuchos::ArrayView<const LocalOrdinal> indices;
+    Teuchos::ArrayView<const double> values;
+    bulkTangent->getLocalRowView(row, indices, values);
+    for (int k = 0; k < indices.size(); ++k)
+      interfaceRows.push_back({t.row, columns.getGlobalElement(indices[k]), t.value * values[k]});
+    const auto contact = stiffnessRows.find(t.column);
+    if (contact != stiffnessRows.end())
+      for (const auto& [column, value] : contact->second) interfaceRows.push_back({t.row, column, t.value * value});
   }
-  return Tpetra::MatrixMatrix::add(1.0, false, *bulkTangent, 1.0, false, *interfaceRows);
+  static const auto addTimer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact K + interface rows");
+  Teuchos::TimeMonitor addScope(*addTimer);
+  return linalg::addTriplets(*bulkTangent, interfaceRows);
 }
 
 bool ContactModel::converged() const {

@@ -75,7 +75,7 @@ private:
   std::vector<PairIterationSummary> pairSummaries_;
   ContactIterationSummary summary_;
   int updatesInStep_ = 0;
-  Teuchos::RCP<CrsMatrix> transform_, constraint_, stiffness_;
+  Teuchos::RCP<CrsMatrix> transform_;  ///< T - I (for the residual)
   ContactContributions contributions_;
   bool contributes_ = false;  ///< some rank has transform or stiffness entries
 };

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <map>
 #include <string>
+#include <unordered_map>
 
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -28,6 +29,7 @@ std::vector<double> toOwners(const std::vector<double>& records, int width, cons
   const auto& comm = *map.getComm();
   const int size = comm.getSize();
   const std::size_t n = records.size() / width;
+  if (size == 1) return records;  // one rank owns every row (rows come from the DoF map)
   // The owner of each distinct row, looked up once (Tpetra's directory is
   // given a sorted list without duplicates). One extra, valid index on every
   // rank: Map::getRemoteIndexList returns at once for an empty list, skipping
@@ -53,7 +55,6 @@ std::vector<double> toOwners(const std::vector<double>& records, int width, cons
       failure = "internal: contribution to row " + std::to_string(row) + " outside the DoF map";
   }
   throwIfAnyRankFailed(comm, failure);
-  if (size == 1) return records;
 
   std::vector<int> sendCounts(size, 0), sendOffsets(size + 1, 0);
   for (std::size_t i = 0; i < n; ++i) sendCounts[owners[i]] += width;
@@ -123,6 +124,116 @@ void addEntries(const std::vector<VectorEntry>& entries, Vector& owned) {
   auto data = owned.getDataNonConst(0);
   for (std::size_t i = 0; i < mine.size(); i += 2)
     data[map.getLocalElement(static_cast<GlobalOrdinal>(mine[i]))] += mine[i + 1];
+}
+
+}  // namespace coulomb::linalg
+
+namespace coulomb::linalg {
+
+Teuchos::RCP<CrsMatrix> addTriplets(const CrsMatrix& K, const std::vector<MatrixTriplet>& triplets) {
+  const auto rowMap = K.getRowMap();
+  std::vector<double> records;
+  records.reserve(triplets.size() * 3);
+  for (const auto& t : triplets) {
+    records.push_back(static_cast<double>(t.row));
+    records.push_back(static_cast<double>(t.column));
+    records.push_back(t.value);
+  }
+  const auto mine = toOwners(records, 3, *rowMap);
+
+  // Column map: K's, then the columns only the triplets have (in order of appearance).
+  const auto kColumns = K.getColMap();
+  std::vector<GlobalOrdinal> columnGids(kColumns->getNodeElementList().begin(), kColumns->getNodeElementList().end());
+  std::unordered_map<GlobalOrdinal, LocalOrdinal> extra;
+  const std::size_t n = mine.size() / 3;
+  std::vector<LocalOrdinal> localRow(n), localColumn(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto row = static_cast<GlobalOrdinal>(mine[3 * i]);
+    const auto column = static_cast<GlobalOrdinal>(mine[3 * i + 1]);
+    localRow[i] = rowMap->getLocalElement(row);
+    LocalOrdinal c = kColumns->getLocalElement(column);
+    if (c == Teuchos::OrdinalTraits<LocalOrdinal>::invalid()) {
+      const auto it = extra.find(column);
+      if (it != extra.end()) {
+        c = it->second;
+      } else {
+        c = static_cast<LocalOrdinal>(columnGids.size());
+        columnGids.push_back(column);
+        extra.emplace(column, c);
+      }
+    }
+    localColumn[i] = c;
+  }
+  // Triplets grouped by local row (counting sort).
+  const std::size_t numRows = rowMap->getNodeNumElements();
+  std::vector<std::size_t> start(numRows + 1, 0);
+  for (std::size_t i = 0; i < n; ++i) ++start[localRow[i] + 1];
+  for (std::size_t r = 0; r < numRows; ++r) start[r + 1] += start[r];
+  std::vector<std::size_t> order(n), cursor(start.begin(), start.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) order[cursor[localRow[i]]++] = i;
+
+  Teuchos::ArrayRCP<std::size_t> rowPointers(numRows + 1);
+  std::vector<LocalOrdinal> columns;
+  std::vector<double> values;
+  columns.reserve(K.getNodeNumEntries() + n);
+  values.reserve(K.getNodeNumEntries() + n);
+  std::vector<std::pair<LocalOrdinal, double>> added;
+  rowPointers[0] = 0;
+  for (std::size_t r = 0; r < numRows; ++r) {
+    Teuchos::ArrayView<const LocalOrdinal> kIndices;
+    Teuchos::ArrayView<const double> kValues;
+    K.getLocalRowView(static_cast<LocalOrdinal>(r), kIndices, kValues);
+    const std::size_t first = columns.size();
+    columns.insert(columns.end(), kIndices.begin(), kIndices.end());
+    values.insert(values.end(), kValues.begin(), kValues.end());
+    added.clear();
+    for (std::size_t k = start[r]; k < start[r + 1]; ++k) added.push_back({localColumn[order[k]], mine[3 * order[k] + 2]});
+    std::sort(added.begin(), added.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    // K's row is sorted by local column: a binary search finds an existing
+    // entry; the other columns (duplicates summed) are merged in afterwards.
+    const std::size_t kEnd = columns.size();
+    for (std::size_t k = 0; k < added.size();) {
+      const LocalOrdinal c = added[k].first;
+      double v = 0;
+      for (; k < added.size() && added[k].first == c; ++k) v += added[k].second;
+      const auto begin = columns.begin() + static_cast<std::ptrdiff_t>(first);
+      const auto end = columns.begin() + static_cast<std::ptrdiff_t>(kEnd);
+      const auto it = std::lower_bound(begin, end, c);
+      if (it != end && *it == c) {
+        values[static_cast<std::size_t>(it - columns.begin())] += v;
+      } else {
+        columns.push_back(c);
+        values.push_back(v);
+      }
+    }
+    if (columns.size() > kEnd) {
+      std::vector<std::pair<LocalOrdinal, double>> row;
+      row.reserve(columns.size() - first);
+      for (std::size_t k = first; k < columns.size(); ++k) row.push_back({columns[k], values[k]});
+      std::inplace_merge(row.begin(), row.begin() + static_cast<std::ptrdiff_t>(kEnd - first), row.end(),
+                         [](const auto& x, const auto& y) { return x.first < y.first; });
+      for (std::size_t k = 0; k < row.size(); ++k) {
+        columns[first + k] = row[k].first;
+        values[first + k] = row[k].second;
+      }
+    }
+    rowPointers[r + 1] = columns.size();
+  }
+  Teuchos::RCP<const Map> columnMap = kColumns;
+  if (!extra.empty())
+    columnMap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                     Teuchos::ArrayView<const GlobalOrdinal>(columnGids), rowMap->getIndexBase(),
+                                     rowMap->getComm()));
+  Teuchos::ArrayRCP<LocalOrdinal> columnArray(columns.size());
+  Teuchos::ArrayRCP<double> valueArray(values.size());
+  std::copy(columns.begin(), columns.end(), columnArray.begin());
+  std::copy(values.begin(), values.end(), valueArray.begin());
+  auto sum = Teuchos::rcp(new CrsMatrix(rowMap, columnMap, rowPointers, columnArray, valueArray));
+  // The importer: K's when the columns did not change (always in serial).
+  Teuchos::RCP<const Import> importer;
+  if (extra.empty()) importer = K.getGraph()->getImporter();
+  sum->expertStaticFillComplete(K.getDomainMap(), K.getRangeMap(), importer);
+  return sum;
 }
 
 }  // namespace coulomb::linalg

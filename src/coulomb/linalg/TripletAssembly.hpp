@@ -36,6 +36,14 @@ struct VectorEntry {
 Teuchos::RCP<CrsMatrix> matrixFromTriplets(const std::vector<MatrixTriplet>& triplets,
                                            const Teuchos::RCP<const Map>& map);
 
+/// @brief Collective: the matrix K + (sum of every rank's `triplets`), with
+/// K's row, domain and range maps; K must be fill-complete and its rows sorted.
+/// Built directly in compressed-row form (K's column map extended by the new
+/// columns, each row K's entries in order then the new ones sorted): a
+/// general sparse sum (Tpetra::MatrixMatrix::add) sorts every row and costs
+/// several times more on the size of K.
+Teuchos::RCP<CrsMatrix> addTriplets(const CrsMatrix& K, const std::vector<MatrixTriplet>& triplets);
+
 /// @brief Collective: adds every rank's `entries` into `owned` (on its map).
 void addEntries(const std::vector<VectorEntry>& entries, Vector& owned);
 
