@@ -1,6 +1,9 @@
 // TripletAssembly: contributions from any rank end up, summed, on the row owner.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
@@ -71,6 +74,53 @@ TEST(TripletAssembly, OnlyOneRankContributes) {
     linalg::addEntries(entries, v);
     EXPECT_EQ(matrix->getGlobalNumEntries(), static_cast<Tpetra::global_size_t>(n));
     EXPECT_DOUBLE_EQ(v.norm1(), 1.5 * n);
+  }
+}
+
+}  // namespace coulomb::test
+
+namespace coulomb::test {
+
+// addTriplets: K + S with S adding entries inside and outside K's pattern,
+// from one rank only (the column map then changes on some ranks only).
+TEST(TripletAssembly, AddTripletsEqualsTheSumAppliedToAVector) {
+  auto comm = worldComm();
+  const int size = comm->getSize();
+  const GlobalOrdinal n = 5 * size + 2;
+  auto map = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(n), 0, comm));
+  std::vector<linalg::MatrixTriplet> k;
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
+    const GlobalOrdinal g = map->getGlobalElement(static_cast<LocalOrdinal>(i));
+    k.push_back({g, g, 4.0});
+    if (g > 0) k.push_back({g, g - 1, -1.0});
+    if (g + 1 < n) k.push_back({g, g + 1, -1.0});
+  }
+  auto K = linalg::matrixFromTriplets(k, map);
+  std::vector<linalg::MatrixTriplet> s;
+  if (comm->getRank() == 0)
+    for (GlobalOrdinal g = 0; g < n; ++g) {
+      s.push_back({g, g, 0.5});                      // inside K's pattern
+      s.push_back({g, (g + n / 2) % n, 0.25});       // mostly outside it
+      s.push_back({g, (g + n / 2) % n, 0.25});       // duplicate: summed
+    }
+  auto sum = linalg::addTriplets(*K, s);
+  auto S = linalg::matrixFromTriplets(s, map);
+  Vector x(map), expected(map), actual(map), part(map);
+  auto data = x.getDataNonConst(0);
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i)
+    data[i] = std::sin(1.0 + static_cast<double>(map->getGlobalElement(static_cast<LocalOrdinal>(i))));
+  K->apply(x, expected);
+  S->apply(x, part);
+  expected.update(1.0, part, 1.0);
+  sum->apply(x, actual);
+  actual.update(-1.0, expected, 1.0);
+  EXPECT_LT(actual.normInf(), 1e-14);
+  // Rows stay sorted by local column (the smoothers' requirement).
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
+    Teuchos::ArrayView<const LocalOrdinal> indices;
+    Teuchos::ArrayView<const double> values;
+    sum->getLocalRowView(static_cast<LocalOrdinal>(i), indices, values);
+    EXPECT_TRUE(std::is_sorted(indices.begin(), indices.end()));
   }
 }
 

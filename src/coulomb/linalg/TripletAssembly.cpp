@@ -219,8 +219,10 @@ Teuchos::RCP<CrsMatrix> addTriplets(const CrsMatrix& K, const std::vector<Matrix
     }
     rowPointers[r + 1] = columns.size();
   }
+  // A new column map (and importer) is a collective decision.
+  const bool newColumns = anyRank(*rowMap->getComm(), !extra.empty());
   Teuchos::RCP<const Map> columnMap = kColumns;
-  if (!extra.empty())
+  if (newColumns)
     columnMap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
                                      Teuchos::ArrayView<const GlobalOrdinal>(columnGids), rowMap->getIndexBase(),
                                      rowMap->getComm()));
@@ -229,9 +231,9 @@ Teuchos::RCP<CrsMatrix> addTriplets(const CrsMatrix& K, const std::vector<Matrix
   std::copy(columns.begin(), columns.end(), columnArray.begin());
   std::copy(values.begin(), values.end(), valueArray.begin());
   auto sum = Teuchos::rcp(new CrsMatrix(rowMap, columnMap, rowPointers, columnArray, valueArray));
-  // The importer: K's when the columns did not change (always in serial).
+  // The importer: K's when no rank has new columns (always in serial).
   Teuchos::RCP<const Import> importer;
-  if (extra.empty()) importer = K.getGraph()->getImporter();
+  if (!newColumns) importer = K.getGraph()->getImporter();
   sum->expertStaticFillComplete(K.getDomainMap(), K.getRangeMap(), importer);
   return sum;
 }
