@@ -1,0 +1,121 @@
+// The condensed contact tangent J = T (K + K_c) + G against central finite
+// differences of the condensed residual F (active set frozen), on distorted,
+// non-matching meshes in 2D (QUAD4 / Line2 mortar) and 3D (TET4 / Tri3
+// mortar with symmetry planes):
+//  - Penalty: F = r - f_c is a smooth function of u for a fixed set, and J is
+//    its exact derivative (through D, M, g~ and the nodal normals), anywhere.
+//  - ALM: F = T r + g with the multipliers condensed; J is the exact
+//    derivative where the slave rows are in equilibrium (the neglected
+//    (dT/du) (r - f_c) vanishes there), i.e. at the converged state checked.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "TestSupport.hpp"
+#include "coulomb/contact/ContactModel.hpp"
+#include "coulomb/fem/Assembler.hpp"
+#include "coulomb/fem/DofMap.hpp"
+
+namespace coulomb::test {
+namespace {
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+/// Runs a shipped Hertz deck on a distorted copy of its mesh with the given formulation.
+std::unique_ptr<solver::Simulation> solveDistorted(const std::string& deck, const std::string& mesh,
+                                                   const std::string& formulation) {
+  const std::string dir = scratchDirectory("contact_jacobian_" + deck + "_" + formulation);
+  writeDistortedCopy(shippedMesh(mesh), dir + "/mesh.e", 0.15);
+  std::string text = readFile(std::string(COULOMB_SOURCE_DIR) + "/xml/" + deck + ".xml");
+  text = replaceAll(text, "../exodus_meshes/" + mesh, "mesh.e");
+  text = replaceAll(text, "name=\"Formulation\" type=\"string\" value=\"ALM\"",
+                    "name=\"Formulation\" type=\"string\" value=\"" + formulation + "\"");
+  writeOnRoot(dir + "/deck.xml", text);
+  auto simulation = std::make_unique<solver::Simulation>(dir + "/deck.xml", worldComm(), nullptr, dir + "/out.e");
+  simulation->run();
+  return simulation;
+}
+
+/// F(u) and, if asked, J(u) at pseudo time 1 with the active set frozen.
+void evaluate(solver::Simulation& simulation, const Vector& u, Vector& F, Teuchos::RCP<CrsMatrix>* J) {
+  auto& assembler = simulation.assembler();
+  Vector r(u.getMap());
+  assembler.assemble(1.0, u, &r, nullptr);
+  simulation.contact()->update(u, r, true);
+  F.assign(r);
+  simulation.contact()->condenseResidual(F);
+  if (J) {
+    auto K = assembler.createMatrix();
+    assembler.assemble(1.0, u, nullptr, K.get());
+    *J = simulation.contact()->condensedTangent(K);
+  }
+}
+
+/// max-norm relative error of J w against the central difference along w.
+double directionalError(solver::Simulation& simulation) {
+  const auto map = simulation.dofMap().ownedMap();
+  Vector u(simulation.displacement(), Teuchos::Copy), w(map), F(map), Fp(map), Fm(map), Jw(map), up(map), um(map);
+  auto data = w.getDataNonConst(0);
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i)
+    data[i] = std::sin(0.7 * static_cast<double>(map->getGlobalElement(static_cast<LocalOrdinal>(i))) + 0.3);
+  simulation.assembler().constraints().setPrescribedValues(0.0, w);  // no change of prescribed DoFs
+  const double h = 1e-7 * u.normInf() / w.normInf();
+  Teuchos::RCP<CrsMatrix> J;
+  evaluate(simulation, u, F, &J);
+  J->apply(w, Jw);
+  up.update(1.0, u, h, w, 0.0);
+  um.update(1.0, u, -h, w, 0.0);
+  evaluate(simulation, up, Fp, nullptr);
+  evaluate(simulation, um, Fm, nullptr);
+  Fp.update(-1.0 / (2 * h), Fm, 1.0 / (2 * h));
+  Fp.update(-1.0, Jw, 1.0);
+  const double error = Fp.normInf() / Jw.normInf();
+  if (worldComm()->getRank() == 0) std::printf("directional error %.3e\n", error);
+  return error;
+}
+
+}  // namespace
+
+TEST(ContactJacobian, Penalty2DMatchesFiniteDifferences) {
+  auto simulation = solveDistorted("hertz2d", "hertz2d.e", "Penalty");
+  EXPECT_GT(simulation->contact()->lastSummary().activeSet.active, 5u);
+  EXPECT_LT(directionalError(*simulation), 1e-6);
+}
+
+TEST(ContactJacobian, Alm2DMatchesFiniteDifferencesAtEquilibrium) {
+  auto simulation = solveDistorted("hertz2d", "hertz2d.e", "ALM");
+  EXPECT_GT(simulation->contact()->lastSummary().activeSet.active, 5u);
+  EXPECT_LT(directionalError(*simulation), 1e-6);
+}
+
+TEST(ContactJacobian, Penalty3DMatchesFiniteDifferences) {
+  auto simulation = solveDistorted("hertz3d_quarter", "hertz3d_quarter.e", "Penalty");
+  EXPECT_GT(simulation->contact()->lastSummary().activeSet.active, 5u);
+  EXPECT_LT(directionalError(*simulation), 1e-6);
+}
+
+TEST(ContactJacobian, Alm3DMatchesFiniteDifferencesAtEquilibrium) {
+  auto simulation = solveDistorted("hertz3d_quarter", "hertz3d_quarter.e", "ALM");
+  EXPECT_GT(simulation->contact()->lastSummary().activeSet.active, 5u);
+  EXPECT_LT(directionalError(*simulation), 1e-6);
+}
+
+}  // namespace coulomb::test
