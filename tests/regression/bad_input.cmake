@@ -56,3 +56,10 @@ coulomb_bad_input(unknown_side_set "'Neumann Conditions/top pressure/Side Set'.*
 coulomb_bad_input(unsupported_element_hex20 "hex20_block[.]e.*'quadratic'.*HEX20" CDL hex20_block.cdl)
 coulomb_bad_input(unsupported_element_truss "truss_block[.]e.*'tie'.*TRUSS" CDL truss_block.cdl)
 coulomb_bad_input(inverted_element "element 2 of block 'body'.*inverted" CDL inverted_hex8.cdl)
+
+# Contact pairs.
+coulomb_bad_input(contact_unknown_slave_set "'Contact/Pairs/punch.*'slavee'" NP 1 2)
+coulomb_bad_input(contact_slave_equals_master "'Contact/Pairs/punch'.*'master'.*both")
+coulomb_bad_input(contact_negative_penalty "'Contact/Pairs/punch/Penalty'")
+coulomb_bad_input(contact_unknown_formulation "'Contact/Pairs/punch/Formulation'")
+coulomb_bad_input(contact_penetration_beyond_search_radius "Contact/Pairs/punch: slave node [0-9]+ penetrates the master by .*search radius")

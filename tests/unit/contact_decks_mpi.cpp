@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 
 #include "TestSupport.hpp"
 #include "coulomb/io/ExodusResults.hpp"
@@ -203,6 +205,43 @@ TEST(ContactHertz, QuarterModelWithTwoPrescribedDofsAtTheOriginConverges) {
   const auto h = compareWithHertz(run, 3, 4 * quarterLoad);
   EXPECT_LT(std::abs(h.aFit / h.aTheory - 1), 0.05) << "a fit " << h.aFit << " Hertz " << h.aTheory;
   EXPECT_LT(std::abs(h.p0Fit / h.p0Theory - 1), 0.10) << "p0 fit " << h.p0Fit << " Hertz " << h.p0Theory;
+}
+
+}  // namespace coulomb::test
+
+namespace coulomb::test {
+
+// A pair whose surfaces never meet is not an error: the run goes through and
+// reports no active node (the console adds a note).
+TEST(ContactPairs, SurfacesThatNeverMeetGiveNoActiveNode) {
+  const std::string dir = scratchDirectory("contact_never_meet");
+  std::ifstream in(std::string(COULOMB_SOURCE_DIR) + "/xml/contact_patch_2d.xml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string deck = text.str();
+  auto replace = [&deck](const std::string& from, const std::string& to) {
+    const auto at = deck.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    deck.replace(at, from.size(), to);
+  };
+  replace("../exodus_meshes/contact_patch2d.e", shippedMesh("contact_patch2d.e"));
+  // The punch's top face against the base's bottom face.
+  replace("<Parameter name=\"Slave\" type=\"string\" value=\"slave\"/>",
+          "<Parameter name=\"Slave\" type=\"string\" value=\"top\"/>");
+  replace("<Parameter name=\"Master\" type=\"string\" value=\"master\"/>",
+          "<Parameter name=\"Master\" type=\"string\" value=\"bottom\"/>");
+  writeOnRoot(dir + "/deck.xml", deck);
+  std::ostringstream console;
+  solver::Simulation simulation(dir + "/deck.xml", worldComm(), &console, dir + "/out.e");
+  const auto summary = simulation.run();
+  EXPECT_EQ(summary.steps, 2);
+  ASSERT_EQ(summary.pairMaximumActive.size(), 1u);
+  EXPECT_EQ(summary.pairMaximumActive[0], 0);
+  if (worldComm()->getRank() == 0) {
+    EXPECT_NE(console.str().find("contact pair 'punch' had no active node in any step"), std::string::npos);
+    const auto results = io::readExodusResults(dir + "/out.e");
+    for (const auto& step : results.global) EXPECT_EQ(step[results.globalIndex("contact_active_nodes_punch")], 0.0);
+  }
 }
 
 }  // namespace coulomb::test

@@ -133,6 +133,20 @@ void Simulation::writeStep(double time, const std::vector<double>& stepGlobals) 
   solvers_->writer->writeStep(time, fields, globals);
 }
 
+void Simulation::reportContact(RunSummary& summary) {
+  const auto values = contact_->globals();  // per pair: force components, then the active count
+  const int dim = mesh_->dimension();
+  summary.pairMaximumActive.resize(contact_->pairs().size(), 0);
+  for (std::size_t p = 0; p < contact_->pairs().size(); ++p) {
+    const long long active = static_cast<long long>(values[p * (dim + 1) + dim]);
+    summary.pairMaximumActive[p] = std::max(summary.pairMaximumActive[p], active);
+    if (!console_) continue;
+    *console_ << "  contact '" << contact_->pairs()[p]->settings().name << "': " << active << " active nodes, force (";
+    for (int c = 0; c < dim; ++c) *console_ << (c ? ", " : "") << std::setprecision(6) << values[p * (dim + 1) + c];
+    *console_ << ")\n" << std::defaultfloat;
+  }
+}
+
 RunSummary Simulation::run() {
   const auto start = std::chrono::steady_clock::now();
   const int dim = mesh_->dimension();
@@ -212,6 +226,7 @@ RunSummary Simulation::run() {
                 << report.linearIterations() << " linear iterations, |f| = " << std::scientific << std::setprecision(2)
                 << report.iterations.back().residualNorm << std::defaultfloat << ", " << std::fixed
                 << std::setprecision(2) << seconds << " s" << std::defaultfloat << "\n";
+    if (contact_) reportContact(summary);
     // Recover the nominal step after a cutback, but only once two steps in a
     // row went through at the reduced size (else it fails again at once).
     if (++successesSinceCutback >= 2) {
@@ -220,6 +235,12 @@ RunSummary Simulation::run() {
     }
   }
   solvers_->writer->finish();
+  if (contact_ && console_)
+    for (std::size_t p = 0; p < contact_->pairs().size(); ++p)
+      if (summary.pairMaximumActive.size() > p && summary.pairMaximumActive[p] == 0)
+        *console_ << "coulomb: note: contact pair '" << contact_->pairs()[p]->settings().name
+                  << "' had no active node in any step: do its surfaces meet? (check 'Slave', 'Master' and "
+                     "'Search Radius Factor')\n";
   summary.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (settings_.printTimers) Teuchos::TimeMonitor::summarize(comm_.ptr(), console_ ? *console_ : std::cout);
   if (console_)

@@ -40,6 +40,7 @@ struct RunSummary {
   std::vector<std::vector<double>> stepResidualNorms;  ///< Newton residual sequence per converged step
   std::vector<std::vector<long long>> stepActiveNodes;   ///< contact: active nodes per Newton iteration
   std::vector<std::vector<long long>> stepChangedNodes;  ///< contact: nodes that changed state, per iteration
+  std::vector<long long> pairMaximumActive;              ///< contact: most active nodes of each pair in a step
 };
 
 class Simulation {
@@ -70,6 +71,8 @@ public:
 private:
   struct Solvers;
   void writeStep(double time, const std::vector<double>& stepGlobals);
+  /// Console line per contact pair after a converged step; records the active counts.
+  void reportContact(RunSummary& summary);
 
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   std::ostream* console_;
