@@ -56,6 +56,8 @@ public:
   /// J = T (K + K_c) + G as a new matrix (K unchanged); K itself when no pair contributes.
   Teuchos::RCP<CrsMatrix> condensedTangent(const Teuchos::RCP<CrsMatrix>& bulkTangent) const;
 
+  /// The contributions of the last update (the saddle-point form included).
+  const ContactContributions& contributions() const { return contributions_; }
   const ContactIterationSummary& lastSummary() const { return summary_; }
   /// Converged: active set unchanged at the last update and the normal test met.
   bool converged() const;

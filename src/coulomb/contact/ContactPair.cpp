@@ -109,6 +109,7 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
   const double h = meanSlaveFaceDiameter(*interface_);
   epsN_ = settings.penalty > 0 ? settings.penalty : defaultPenalty(youngsModulus, h, settings.penaltyFactor);
   k_ = settings.scaleFactor;
+  multiplierOffset_ = static_cast<GlobalOrdinal>(dim_) * mesh.global().numNodes();
   minimumD_ = 1e-8 * std::pow(h, dim_ - 1);
 
   prescribed_.assign(interface_->interfaceNodes().size(), {false, false, false});
@@ -342,6 +343,24 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
       addScaled(gapRow, entry->dGap, scale);
       emitRow(out.constraint, row(node, frame.gapSlot), gapRow);
       summary.normalResidual2 += (epsN_ * t * gap) * (epsN_ * t * gap);
+      // The same step as the uncondensed saddle-point system (lambda_n,j a
+      // DoF of its own): its column -d f_c / d lambda_n, its row eps_n t g~.
+      const GlobalOrdinal multiplier = multiplierOffset_ + node;
+      for (int c = 0; c < dim_; ++c) {
+        if (!isPrescribed(node, c)) {
+          out.saddle.columns.push_back({row(node, c), multiplier, -k_ * t * D * n[c]});
+          out.saddle.force.push_back({row(node, c), -k_ * t * D * lambdaN * n[c]});
+        }
+        for (const auto& [master, Mjl] : entry->M)
+          if (!isPrescribed(master, c)) {
+            out.saddle.columns.push_back({row(master, c), multiplier, k_ * t * Mjl * n[c]});
+            out.saddle.force.push_back({row(master, c), k_ * t * Mjl * lambdaN * n[c]});
+          }
+      }
+      std::map<DofKey, double> saddleRow;
+      addScaled(saddleRow, entry->dGap, epsN_ * t);
+      emitRow(out.saddle.rows, multiplier, saddleRow);
+      out.saddle.gap.push_back({multiplier, epsN_ * t * gap});
       // K_c = -d f_c / dx with lambda_n frozen: slave f_j = k t lambda_n D n, master f_l = -k t lambda_n M_jl n.
       if (lambdaN != 0.0) {
         const double kl = k_ * t * lambdaN;

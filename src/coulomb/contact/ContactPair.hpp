@@ -37,6 +37,18 @@
 
 namespace coulomb::contact {
 
+/// @brief The uncondensed (u, lambda_n) Newton system of the active ALM
+/// nodes, for checking the condensation: lambda_n of slave node j is the DoF
+/// dim × (number of mesh nodes) + j, owned by the node's owner.
+///   [K + K_c   C] [du]     [r - f_c]
+///   [  G_s     0] [dl] = - [  g_s  ]
+struct SaddlePointContributions {
+  std::vector<linalg::MatrixTriplet> columns;  ///< C = -d f_c / d lambda_n
+  std::vector<linalg::MatrixTriplet> rows;     ///< G_s = d (eps_n t g~) / du
+  std::vector<linalg::VectorEntry> gap;        ///< g_s = eps_n t g~
+  std::vector<linalg::VectorEntry> force;      ///< -f_c with the current lambda_n
+};
+
 /// @brief Contributions of one or more pairs to the condensed system.
 struct ContactContributions {
   std::vector<linalg::MatrixTriplet> transform;   ///< T - I
@@ -44,6 +56,7 @@ struct ContactContributions {
   std::vector<linalg::VectorEntry> constraintResidual;  ///< g
   std::vector<linalg::MatrixTriplet> contactStiffness;  ///< K_c
   std::vector<linalg::VectorEntry> contactResidual;     ///< -f_c (penalty pairs)
+  SaddlePointContributions saddle;                      ///< ALM pairs, uncondensed form
 };
 
 /// @brief Per-update figures of one pair, summed over ranks.
@@ -99,6 +112,7 @@ private:
   std::unique_ptr<InterfaceGather> gather_;
   int dim_;
   double epsN_ = 0, k_ = 1, thickness_ = 1, radius_ = 0, minimumD_ = 0;
+  GlobalOrdinal multiplierOffset_ = 0;  ///< first global index of the lambda_n DoFs (saddle-point form)
   /// prescribed_[i][c]: component c of interface node i is a Dirichlet DoF.
   std::vector<std::array<bool, 3>> prescribed_;
   bool searched_ = false;
