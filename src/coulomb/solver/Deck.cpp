@@ -43,6 +43,10 @@ Teuchos::RCP<const ParameterList> validDeckParameters() {
     stepping.set("Number of Steps", 1, "equal steps to reach the final time", range<int>(1, 1000000));
     stepping.set("Final Time", 1.0, "pseudo time of the last step", io::positive());
     stepping.set("Maximum Cutbacks", 5, "times a step may be halved and retried when Newton fails", range<int>(0, 50));
+    stepping.set("Predictor", "Extrapolate",
+                 "first Newton iterate of a step: Extrapolate (the last step's increment, scaled to this step) or "
+                 "Previous (the last converged state); prescribed values are set in both",
+                 rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("Extrapolate", "Previous"))));
 
     ParameterList& newton = valid->sublist("Newton", false, "Newton convergence");
     const NewtonSettings defaults;
@@ -89,6 +93,7 @@ RunSettings parseRunSettings(const ParameterList& deck, const std::string& deckP
   run.numberOfSteps = io::valueOrDefault<int>(sub("Load Stepping"), stepping, "Number of Steps");
   run.finalTime = io::valueOrDefault<double>(sub("Load Stepping"), stepping, "Final Time");
   run.maximumCutbacks = io::valueOrDefault<int>(sub("Load Stepping"), stepping, "Maximum Cutbacks");
+  run.extrapolate = io::valueOrDefault<std::string>(sub("Load Stepping"), stepping, "Predictor") == "Extrapolate";
   const auto& newton = valid.sublist("Newton");
   run.newton.maximumIterations = io::valueOrDefault<int>(sub("Newton"), newton, "Maximum Iterations");
   run.newton.relativeTolerance = io::valueOrDefault<double>(sub("Newton"), newton, "Relative Tolerance");

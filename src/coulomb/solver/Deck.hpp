@@ -19,6 +19,7 @@ struct RunSettings {
   int numberOfSteps = 1;
   double finalTime = 1.0;
   int maximumCutbacks = 5;
+  bool extrapolate = true;   ///< predictor: last increment scaled to the step (else the last state)
   NewtonSettings newton;
   std::string outputFile;    ///< resolved relative to the deck's folder
   bool printTimers = false;

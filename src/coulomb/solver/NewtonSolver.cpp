@@ -66,7 +66,7 @@ public:
     report_.iterations.push_back(row);
     if (console_) {
       *console_ << "    iter   |residual|    |increment|  lin.it  time[s]";
-      if (contact_) *console_ << "  active changed  |r_normal|  set";
+      if (contact_) *console_ << "  active changed  |r_normal|  ratio      set";
       *console_ << "\n";
       print(row);
     }
@@ -98,6 +98,7 @@ private:
     row.activeNodes = static_cast<long long>(s.activeSet.active);
     row.changedNodes = static_cast<long long>(s.activeSet.changed);
     row.normalResidual = s.normalResidual;
+    row.normalRatio = s.contactForce > 0 ? s.normalResidual / s.contactForce : 0.0;
     row.contactConverged = contact_->converged();
   }
   void print(const NewtonIteration& row) const {
@@ -109,8 +110,8 @@ private:
               << std::setw(7) << row.seconds << std::defaultfloat;
     if (row.activeNodes >= 0)
       *console_ << "  " << std::setw(6) << row.activeNodes << "  " << std::setw(7) << row.changedNodes << "  "
-                << std::scientific << std::setprecision(3) << std::setw(10) << row.normalResidual << std::defaultfloat
-                << "  " << (row.contactConverged ? "yes" : "no");
+                << std::scientific << std::setprecision(3) << std::setw(10) << row.normalResidual << "  "
+                << std::setw(9) << row.normalRatio << std::defaultfloat << "  " << (row.contactConverged ? "yes" : "no");
     *console_ << "\n";
   }
   NewtonReport& report_;

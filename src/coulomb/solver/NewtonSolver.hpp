@@ -36,6 +36,7 @@ struct NewtonIteration {
   long long activeNodes = -1;
   long long changedNodes = 0;
   double normalResidual = 0;
+  double normalRatio = 0;   ///< normalResidual / ||contact forces||
   bool contactConverged = false;
 };
 
