@@ -76,11 +76,9 @@ std::vector<double> toOwners(const std::vector<double>& records, int width, cons
   return received;
 }
 
-}  // namespace
-
-Teuchos::RCP<CrsMatrix> matrixFromTriplets(const std::vector<MatrixTriplet>& triplets,
-                                           const Teuchos::RCP<const Map>& map) {
-  // Global indices travel as doubles: exact below 2^53, far beyond any mesh.
+/// The triplets of every rank whose row this rank owns, as (row, column,
+/// value) records of doubles (global indices are exact below 2^53).
+std::vector<double> tripletsToOwners(const std::vector<MatrixTriplet>& triplets, const Map& map) {
   std::vector<double> records;
   records.reserve(triplets.size() * 3);
   for (const auto& t : triplets) {
@@ -88,7 +86,14 @@ Teuchos::RCP<CrsMatrix> matrixFromTriplets(const std::vector<MatrixTriplet>& tri
     records.push_back(static_cast<double>(t.column));
     records.push_back(t.value);
   }
-  const auto mine = toOwners(records, 3, *map);
+  return toOwners(records, 3, map);
+}
+
+}  // namespace
+
+Teuchos::RCP<CrsMatrix> matrixFromTriplets(const std::vector<MatrixTriplet>& triplets,
+                                           const Teuchos::RCP<const Map>& map) {
+  const auto mine = tripletsToOwners(triplets, *map);
   std::map<GlobalOrdinal, std::map<GlobalOrdinal, double>> rows;
   for (std::size_t i = 0; i < mine.size(); i += 3)
     rows[static_cast<GlobalOrdinal>(mine[i])][static_cast<GlobalOrdinal>(mine[i + 1])] += mine[i + 2];
@@ -127,20 +132,9 @@ void addEntries(const std::vector<VectorEntry>& entries, Vector& owned) {
     data[map.getLocalElement(static_cast<GlobalOrdinal>(mine[i]))] += mine[i + 1];
 }
 
-}  // namespace coulomb::linalg
-
-namespace coulomb::linalg {
-
 Teuchos::RCP<CrsMatrix> addTriplets(const CrsMatrix& K, const std::vector<MatrixTriplet>& triplets) {
   const auto rowMap = K.getRowMap();
-  std::vector<double> records;
-  records.reserve(triplets.size() * 3);
-  for (const auto& t : triplets) {
-    records.push_back(static_cast<double>(t.row));
-    records.push_back(static_cast<double>(t.column));
-    records.push_back(t.value);
-  }
-  const auto mine = toOwners(records, 3, *rowMap);
+  const auto mine = tripletsToOwners(triplets, *rowMap);
 
   // Column map: K's, then the columns only the triplets have (in order of appearance).
   const auto kColumns = K.getColMap();
