@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "TestSupport.hpp"
+#include "coulomb/contact/ContactModel.hpp"
 #include "coulomb/io/ExodusResults.hpp"
 
 namespace coulomb::test {
@@ -242,6 +243,40 @@ TEST(ContactPairs, SurfacesThatNeverMeetGiveNoActiveNode) {
     const auto results = io::readExodusResults(dir + "/out.e");
     for (const auto& step : results.global) EXPECT_EQ(step[results.globalIndex("contact_active_nodes_punch")], 0.0);
   }
+}
+
+}  // namespace coulomb::test
+
+namespace coulomb::test {
+
+// Simplified semi-smooth Newton (set updated at the start of a step only,
+// and again when the frozen set violates the contact conditions) reaches the
+// same solution as the full one.
+TEST(ContactPairs, SimplifiedSemiSmoothNewtonGivesTheFullSolution) {
+  const std::string dir = scratchDirectory("contact_simplified");
+  std::ifstream in(std::string(COULOMB_SOURCE_DIR) + "/xml/hertz2d.xml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string deck = text.str();
+  auto replace = [&deck](const std::string& from, const std::string& to) {
+    const auto at = deck.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    deck.replace(at, from.size(), to);
+  };
+  replace("../exodus_meshes/hertz2d.e", shippedMesh("hertz2d.e"));
+  const std::string formulation = "<Parameter name=\"Formulation\" type=\"string\" value=\"ALM\"/>";
+  writeOnRoot(dir + "/full.xml", deck);
+  replace(formulation, formulation + "<Parameter name=\"Semi-Smooth Newton\" type=\"string\" value=\"Simplified\"/>");
+  writeOnRoot(dir + "/simplified.xml", deck);
+  solver::Simulation full(dir + "/full.xml", worldComm(), nullptr, dir + "/full.e");
+  solver::Simulation simplified(dir + "/simplified.xml", worldComm(), nullptr, dir + "/simplified.e");
+  full.run();
+  const auto summary = simplified.run();
+  EXPECT_EQ(summary.cutbacks, 0);
+  const auto reference = full.reactionTotal("top"), result = simplified.reactionTotal("top");
+  EXPECT_NEAR(result[1], reference[1], 1e-7 * std::abs(reference[1]));
+  EXPECT_EQ(simplified.contact()->lastSummary().activeSet.active, full.contact()->lastSummary().activeSet.active);
+  EXPECT_EQ(simplified.contact()->lastSummary().activeSet.changed, 0u);
 }
 
 }  // namespace coulomb::test

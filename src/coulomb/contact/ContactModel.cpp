@@ -63,6 +63,16 @@ void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool free
     force2 += pairSummaries_[p].contactForce2;
   }
   ++updatesInStep_;
+  // Simplified semi-smooth Newton: a frozen set that the update rule no
+  // longer accepts is not converged; it is updated again at the next
+  // iterates (as at the start of a step) instead of converging to a state
+  // with penetrating or adhesive nodes.
+  long long violations = 0;
+  for (const auto& s : pairSummaries_) violations += s.violations;
+  if (violations > 0) {
+    summary_.activeSet.changed += static_cast<std::size_t>(violations);
+    updatesInStep_ = 0;
+  }
   summary_.normalResidual = std::sqrt(normal2);
   summary_.contactForce = std::sqrt(force2);
   summary_.setUpdated = anyUpdated;

@@ -256,11 +256,15 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
         }
         lambdaN = projected / (k_ * t * D * frame.normFree);
       }
-      if (updateSet) state = almContactState(lambdaN, gap, D, k_, epsN_);
+      const ContactState rule = frame.usable ? almContactState(lambdaN, gap, D, k_, epsN_) : ContactState::Inactive;
+      if (updateSet) state = rule;
+      else if (rule != state) ++summary.violations;
       if (!frame.usable) state = ContactState::Inactive;
       if (state == ContactState::Inactive) lambdaN = 0;
-    } else if (updateSet) {
-      state = penaltyContactState(gap);
+    } else {
+      const ContactState rule = penaltyContactState(gap);
+      if (updateSet) state = rule;
+      else if (rule != state) ++summary.violations;
     }
     state_[i] = state;
     ++summary.activeSet.nodes;
@@ -414,6 +418,8 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
   summary.normalResidual2 = totals[0];
   summary.contactForce2 = totals[1];
   for (int c = 0; c < 3; ++c) summary.slaveForce[c] = totals[2 + c];
+  long long violations = summary.violations;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 1, &violations, &summary.violations);
   long long counts[4] = {static_cast<long long>(summary.activeSet.nodes), static_cast<long long>(summary.activeSet.active),
                          static_cast<long long>(summary.activeSet.inactive),
                          static_cast<long long>(summary.activeSet.changed)};

@@ -65,6 +65,9 @@ struct PairIterationSummary {
   double normalResidual2 = 0;  ///< sum of (eps_n t g~_j)^2 over active ALM nodes
   double contactForce2 = 0;    ///< sum of |f_j|^2 over active slave nodes
   std::array<double, 3> slaveForce{};  ///< total contact force on the slave body
+  /// Nodes whose frozen state (simplified semi-smooth Newton) disagrees with
+  /// the update rule at this iterate; 0 when the set was updated.
+  long long violations = 0;
 };
 
 class ContactPair {

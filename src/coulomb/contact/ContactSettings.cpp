@@ -53,7 +53,8 @@ void addValidContactParameters(ParameterList& valid) {
   pair.set("Penalty Factor", d.penaltyFactor, "factor of the automatic penalty", io::positive());
   pair.set("Scale Factor", d.scaleFactor, "ALM scale factor k (contact traction = k lambda)", io::positive());
   pair.set("Semi-Smooth Newton", "Full",
-           "Full: active set updated every iteration; Simplified: only at the first two evaluations of a step",
+           "Full: active set updated every iteration; Simplified: only at the first two evaluations of a step "
+           "(and again after an iterate where the frozen set violates the contact conditions)",
            oneOf({"Full", "Simplified"}));
   pair.set("Search Every Iteration", d.searchEveryIteration, "search candidates every Newton iteration (else per step)");
   pair.set("Search Radius Factor", d.searchRadiusFactor,

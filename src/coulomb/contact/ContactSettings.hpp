@@ -19,7 +19,9 @@ enum class ContactFormulation { ALM, Penalty };
 
 /// Full: the active set is updated at every Newton iteration. Simplified:
 /// only at the first two evaluations of a load step (the predictor and the
-/// first iterate), then frozen for the rest of the step.
+/// first iterate), then frozen — unless the frozen set violates the update
+/// rule at an iterate, which then counts as a change (not converged) and
+/// opens two more updates.
 enum class SemiSmoothNewton { Full, Simplified };
 
 /// @brief One contact pair.
