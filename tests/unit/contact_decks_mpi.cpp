@@ -19,6 +19,24 @@ namespace {
 
 std::string deckPath(const std::string& name) { return std::string(COULOMB_SOURCE_DIR) + "/xml/" + name + ".xml"; }
 
+/// The text of a shipped deck with its mesh path made absolute, to be edited.
+struct ShippedDeck {
+  std::string text;
+  ShippedDeck(const std::string& name, const std::string& mesh) {
+    std::ifstream in(deckPath(name));
+    std::stringstream content;
+    content << in.rdbuf();
+    text = content.str();
+    replace("../exodus_meshes/" + mesh, shippedMesh(mesh));
+  }
+  /// Replaces the first occurrence of `from` (which must be there).
+  void replace(const std::string& from, const std::string& to) {
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos) << from;
+    text.replace(at, from.size(), to);
+  }
+};
+
 struct ContactRun {
   std::unique_ptr<solver::Simulation> simulation;
   solver::RunSummary summary;
@@ -208,30 +226,19 @@ TEST(ContactHertz, QuarterModelWithTwoPrescribedDofsAtTheOriginConverges) {
   EXPECT_LT(std::abs(h.p0Fit / h.p0Theory - 1), 0.10) << "p0 fit " << h.p0Fit << " Hertz " << h.p0Theory;
 }
 
-}  // namespace coulomb::test
-
-namespace coulomb::test {
 
 // A pair whose surfaces never meet is not an error: the run goes through and
 // reports no active node (the console adds a note).
 TEST(ContactPairs, SurfacesThatNeverMeetGiveNoActiveNode) {
   const std::string dir = scratchDirectory("contact_never_meet");
-  std::ifstream in(std::string(COULOMB_SOURCE_DIR) + "/xml/contact_patch_2d.xml");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string deck = text.str();
-  auto replace = [&deck](const std::string& from, const std::string& to) {
-    const auto at = deck.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    deck.replace(at, from.size(), to);
-  };
-  replace("../exodus_meshes/contact_patch2d.e", shippedMesh("contact_patch2d.e"));
+  ShippedDeck deck("contact_patch_2d", "contact_patch2d.e");
+  auto replace = [&deck](const std::string& from, const std::string& to) { deck.replace(from, to); };
   // The punch's top face against the base's bottom face.
   replace("<Parameter name=\"Slave\" type=\"string\" value=\"slave\"/>",
           "<Parameter name=\"Slave\" type=\"string\" value=\"top\"/>");
   replace("<Parameter name=\"Master\" type=\"string\" value=\"master\"/>",
           "<Parameter name=\"Master\" type=\"string\" value=\"bottom\"/>");
-  writeOnRoot(dir + "/deck.xml", deck);
+  writeOnRoot(dir + "/deck.xml", deck.text);
   std::ostringstream console;
   solver::Simulation simulation(dir + "/deck.xml", worldComm(), &console, dir + "/out.e");
   const auto summary = simulation.run();
@@ -245,29 +252,18 @@ TEST(ContactPairs, SurfacesThatNeverMeetGiveNoActiveNode) {
   }
 }
 
-}  // namespace coulomb::test
-
-namespace coulomb::test {
 
 // Simplified semi-smooth Newton (set updated at the start of a step only,
 // and again when the frozen set violates the contact conditions) reaches the
 // same solution as the full one.
 TEST(ContactPairs, SimplifiedSemiSmoothNewtonGivesTheFullSolution) {
   const std::string dir = scratchDirectory("contact_simplified");
-  std::ifstream in(std::string(COULOMB_SOURCE_DIR) + "/xml/hertz2d.xml");
-  std::stringstream text;
-  text << in.rdbuf();
-  std::string deck = text.str();
-  auto replace = [&deck](const std::string& from, const std::string& to) {
-    const auto at = deck.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    deck.replace(at, from.size(), to);
-  };
-  replace("../exodus_meshes/hertz2d.e", shippedMesh("hertz2d.e"));
+  ShippedDeck deck("hertz2d", "hertz2d.e");
+  auto replace = [&deck](const std::string& from, const std::string& to) { deck.replace(from, to); };
   const std::string formulation = "<Parameter name=\"Formulation\" type=\"string\" value=\"ALM\"/>";
-  writeOnRoot(dir + "/full.xml", deck);
+  writeOnRoot(dir + "/full.xml", deck.text);
   replace(formulation, formulation + "<Parameter name=\"Semi-Smooth Newton\" type=\"string\" value=\"Simplified\"/>");
-  writeOnRoot(dir + "/simplified.xml", deck);
+  writeOnRoot(dir + "/simplified.xml", deck.text);
   solver::Simulation full(dir + "/full.xml", worldComm(), nullptr, dir + "/full.e");
   solver::Simulation simplified(dir + "/simplified.xml", worldComm(), nullptr, dir + "/simplified.e");
   full.run();

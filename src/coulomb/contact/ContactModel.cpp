@@ -51,12 +51,10 @@ void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool free
   contributions_ = ContactContributions();
   summary_ = ContactIterationSummary();
   double normal2 = 0, force2 = 0;
-  bool anyUpdated = false;
   for (std::size_t p = 0; p < pairs_.size(); ++p) {
     // Simplified semi-smooth Newton: the set moves at the predictor and the first iterate only.
     const bool updateSet =
         !freezeSet && (pairs_[p]->settings().semiSmooth == SemiSmoothNewton::Full || updatesInStep_ < 2);
-    anyUpdated = anyUpdated || updateSet;
     pairSummaries_[p] = pairs_[p]->update(u, bulkResidual, updateSet, contributions_);
     summary_.activeSet += pairSummaries_[p].activeSet;
     normal2 += pairSummaries_[p].normalResidual2;
@@ -75,7 +73,6 @@ void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool free
   }
   summary_.normalResidual = std::sqrt(normal2);
   summary_.contactForce = std::sqrt(force2);
-  summary_.setUpdated = anyUpdated;
 
   const bool local = !contributions_.transform.empty() || !contributions_.contactStiffness.empty() ||
                      !contributions_.constraint.empty() || !contributions_.contactResidual.empty() ||

@@ -24,7 +24,6 @@ struct ContactIterationSummary {
   ActiveSetSummary activeSet;
   double normalResidual = 0;  ///< ||eps_n t g~|| over active ALM nodes [force]
   double contactForce = 0;    ///< ||f_j|| over active slave nodes [force]
-  bool setUpdated = false;    ///< the active set was allowed to change at this update
   /// The normal constraint test of ContactSettings.
   bool normalConverged(const ContactSettings& s) const {
     return normalResidual <= s.normalRelativeTolerance * contactForce + s.normalAbsoluteTolerance;
@@ -59,6 +58,8 @@ public:
   /// The contributions of the last update (the saddle-point form included).
   const ContactContributions& contributions() const { return contributions_; }
   const ContactIterationSummary& lastSummary() const { return summary_; }
+  /// Per pair (pairs() order), the figures of the last update.
+  const std::vector<PairIterationSummary>& pairSummaries() const { return pairSummaries_; }
   /// Converged: active set unchanged at the last update and the normal test met.
   bool converged() const;
 

@@ -80,7 +80,6 @@ public:
 
   const ContactPairSettings& settings() const { return settings_; }
   const ContactInterface& interface() const { return *interface_; }
-  double penalty() const { return epsN_; }
 
   /// A new load step: the next update searches; the state is saved for restoreStep().
   void beginStep();

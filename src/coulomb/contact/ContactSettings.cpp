@@ -3,7 +3,6 @@
 #include <limits>
 
 #include <Teuchos_ParameterList.hpp>
-#include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "coulomb/core/Error.hpp"
 #include "coulomb/io/ParameterValidation.hpp"
@@ -12,19 +11,6 @@
 namespace coulomb::contact {
 
 using Teuchos::ParameterList;
-using Teuchos::rcp;
-
-namespace {
-
-Teuchos::RCP<Teuchos::StringValidator> oneOf(std::initializer_list<std::string> names) {
-  return rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names.begin(), names.end())));
-}
-
-Teuchos::RCP<io::RangeValidator> nonNegative() {
-  return rcp(new io::RangeValidator(0.0, false, std::numeric_limits<double>::infinity(), true));
-}
-
-}  // namespace
 
 const char* toString(ContactFormulation formulation) {
   return formulation == ContactFormulation::ALM ? "ALM" : "Penalty";
@@ -45,17 +31,17 @@ void addValidContactParameters(ParameterList& valid) {
   pair.set("Master", "", std::string(io::kRequired) + "master side set");
   pair.set("Formulation", "ALM",
            "ALM: Lagrange multipliers (condensed), no penetration at convergence; Penalty: pressure eps_n <-gap>",
-           oneOf({"ALM", "Penalty"}));
+           io::oneOf({"ALM", "Penalty"}));
   pair.set("Penalty", d.penalty,
            "normal penalty eps_n [force/length^3]; 0 = automatic: Penalty Factor x E / h (E largest Young's modulus "
            "of the two bodies, h mean slave face size)",
-           nonNegative());
+           io::nonNegative());
   pair.set("Penalty Factor", d.penaltyFactor, "factor of the automatic penalty", io::positive());
   pair.set("Scale Factor", d.scaleFactor, "ALM scale factor k (contact traction = k lambda)", io::positive());
   pair.set("Semi-Smooth Newton", "Full",
            "Full: active set updated every iteration; Simplified: only at the first two evaluations of a step "
            "(and again after an iterate where the frozen set violates the contact conditions)",
-           oneOf({"Full", "Simplified"}));
+           io::oneOf({"Full", "Simplified"}));
   pair.set("Search Every Iteration", d.searchEveryIteration, "search candidates every Newton iteration (else per step)");
   pair.set("Search Radius Factor", d.searchRadiusFactor,
            "search radius = this x the largest slave face diameter: must exceed the gap closed in one step",

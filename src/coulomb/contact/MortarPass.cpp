@@ -8,7 +8,7 @@
 ///     full owner table (O(slave nodes), replicated like the interface itself);
 ///  2. every local entry is packed into a flat buffer of doubles for its owner
 ///     (global node numbers are stored as doubles: exact below 2^53);
-///  3. MPI_Alltoall of the buffer sizes, then MPI_Alltoallv of the buffers;
+///  3. exchangeByRank (core/Parallel.hpp: MPI_Alltoall of the sizes, MPI_Alltoallv of the buffers);
 ///  4. the owner unpacks the buffers in rank order (its own included) and adds
 ///     entries with the same node (NodalMortarEntry::add), so the summation order
 ///     is fixed for a given rank count.
@@ -16,16 +16,15 @@
 /// (l, dM row)...; a row is #entries, (node, component, value)....
 #include "coulomb/contact/MortarPass.hpp"
 
-#include <mpi.h>
 
 #include <Teuchos_CommHelpers.hpp>
-#include <Teuchos_DefaultMpiComm.hpp>
 #include <algorithm>
 #include <ostream>
 
 #include "coulomb/contact/MortarSegment2D.hpp"
 #include "coulomb/contact/MortarSegment3D.hpp"
 #include "coulomb/core/Error.hpp"
+#include "coulomb/core/Parallel.hpp"
 
 namespace coulomb::contact {
 
@@ -338,29 +337,7 @@ NodalMortarQuantities sumToOwners(const ContactInterface& contact, const NodalMo
   }
 
   // 3. exchange
-  std::vector<double> received;
-  std::vector<int> recvCounts(size, 0), recvOffsets(size + 1, 0);
-  if (size == 1) {
-    received = std::move(send[0]);
-    recvOffsets[1] = static_cast<int>(received.size());
-  } else {
-    const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
-    COULOMB_REQUIRE(mpi != nullptr, "internal: sumToOwners needs an MPI Teuchos communicator");
-    const MPI_Comm raw = *mpi->getRawMpiComm();
-    std::vector<int> sendCounts(size), sendOffsets(size + 1, 0);
-    std::vector<double> flat;
-    for (int r = 0; r < size; ++r) {
-      COULOMB_REQUIRE(send[r].size() < static_cast<std::size_t>(1) << 30, "internal: mortar buffer too large");
-      sendCounts[r] = static_cast<int>(send[r].size());
-      sendOffsets[r + 1] = sendOffsets[r] + sendCounts[r];
-      flat.insert(flat.end(), send[r].begin(), send[r].end());
-    }
-    MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, raw);
-    for (int r = 0; r < size; ++r) recvOffsets[r + 1] = recvOffsets[r] + recvCounts[r];
-    received.resize(static_cast<std::size_t>(recvOffsets[size]));
-    MPI_Alltoallv(flat.data(), sendCounts.data(), sendOffsets.data(), MPI_DOUBLE, received.data(),
-                  recvCounts.data(), recvOffsets.data(), MPI_DOUBLE, raw);
-  }
+  const std::vector<double> received = exchangeByRank(comm, std::move(send));
 
   // 4. unpack in rank order and sum
   std::map<long long, NodalMortarEntry> sum;

@@ -4,6 +4,8 @@
 #include <vector>
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <mpi.h>
 
 #include "coulomb/core/Error.hpp"
 
@@ -26,6 +28,29 @@ bool anyRank(const Teuchos::Comm<int>& comm, bool local) {
   int value = local ? 1 : 0, result = 0;
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, value, Teuchos::outArg(result));
   return result != 0;
+}
+
+std::vector<double> exchangeByRank(const Teuchos::Comm<int>& comm, std::vector<std::vector<double>> send) {
+  const int size = comm.getSize();
+  COULOMB_REQUIRE(static_cast<int>(send.size()) == size, "internal: exchangeByRank needs one buffer per rank");
+  if (size == 1) return std::move(send[0]);
+  const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
+  COULOMB_REQUIRE(mpi != nullptr, "internal: Coulomb needs an MPI Teuchos communicator");
+  const MPI_Comm raw = *mpi->getRawMpiComm();
+  std::vector<int> sendCounts(size), sendOffsets(size + 1, 0), recvCounts(size), recvOffsets(size + 1, 0);
+  std::vector<double> flat;
+  for (int r = 0; r < size; ++r) {
+    COULOMB_REQUIRE(send[r].size() < static_cast<std::size_t>(1) << 30, "internal: exchange buffer too large");
+    sendCounts[r] = static_cast<int>(send[r].size());
+    sendOffsets[r + 1] = sendOffsets[r] + sendCounts[r];
+    flat.insert(flat.end(), send[r].begin(), send[r].end());
+  }
+  MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, raw);
+  for (int r = 0; r < size; ++r) recvOffsets[r + 1] = recvOffsets[r] + recvCounts[r];
+  std::vector<double> received(static_cast<std::size_t>(recvOffsets[size]));
+  MPI_Alltoallv(flat.data(), sendCounts.data(), sendOffsets.data(), MPI_DOUBLE, received.data(), recvCounts.data(),
+                recvOffsets.data(), MPI_DOUBLE, raw);
+  return received;
 }
 
 }  // namespace coulomb

@@ -3,6 +3,7 @@
 /// @brief Agreement on failures that only some ranks can detect, so that
 /// every rank throws the same coulomb::Error and none hangs.
 #include <string>
+#include <vector>
 
 #include <Teuchos_Comm.hpp>
 
@@ -14,5 +15,10 @@ void throwIfAnyRankFailed(const Teuchos::Comm<int>& comm, const std::string& loc
 
 /// @brief Collective logical or.
 bool anyRank(const Teuchos::Comm<int>& comm, bool local);
+
+/// @brief Collective personalised exchange: `send[r]` goes to rank r; returns
+/// what every rank sent here, concatenated in rank order (one MPI_Alltoall of
+/// the sizes, one MPI_Alltoallv of the doubles). `send` has one entry per rank.
+std::vector<double> exchangeByRank(const Teuchos::Comm<int>& comm, std::vector<std::vector<double>> send);
 
 }  // namespace coulomb

@@ -19,10 +19,6 @@ using Teuchos::rcp;
 
 namespace {
 
-RCP<Teuchos::StringValidator> oneOf(std::initializer_list<std::string> names) {
-  return rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names.begin(), names.end())));
-}
-
 const char* const kFunctionDoc =
     "name of a sublist of 'Functions', or 'ramp' (f = t) or 'constant' (f = 1)";
 
@@ -53,7 +49,7 @@ void addValidModelParameters(ParameterList& valid) {
   ParameterList& materials = valid.sublist("Materials", false, "One sublist per material, named freely");
   ParameterList& material = materials.sublist("*", false, "a material");
   material.set("Model", "Linear Elastic", "small-strain linear elasticity, or compressible Neo-Hookean (total Lagrangian)",
-               oneOf({"Linear Elastic", "Neo-Hookean"}));
+               io::oneOf({"Linear Elastic", "Neo-Hookean"}));
   material.set("Young's Modulus", 1.0, std::string(io::kRequired) + "E [force/area]", io::positive());
   material.set("Poisson's Ratio", 0.0, std::string(io::kRequired) + "nu", rcp(new io::RangeValidator(-1.0, true, 0.5, true)));
 
@@ -64,7 +60,7 @@ void addValidModelParameters(ParameterList& valid) {
 
   ParameterList& problem = valid.sublist("Problem", false, "Modelling assumptions");
   problem.set("Plane Assumption", "Plane Strain", "2D meshes: plane strain or plane stress",
-              oneOf({"Plane Strain", "Plane Stress"}));
+              io::oneOf({"Plane Strain", "Plane Stress"}));
 
   ParameterList& functions = valid.sublist("Functions", false, "Piecewise-linear functions of pseudo time, named freely");
   ParameterList& function = functions.sublist("*", false, "a function");
@@ -74,7 +70,7 @@ void addValidModelParameters(ParameterList& valid) {
   ParameterList& dirichlet = valid.sublist("Dirichlet Conditions", false, "Prescribed displacements, named freely");
   ParameterList& d = dirichlet.sublist("*", false, "u_c = (Value + Linear Coefficients . X) f(t) on a node set");
   d.set("Node Set", "", std::string(io::kRequired) + "node set name (or nodeset_<id>)");
-  d.set("Component", "all", "displaced component", oneOf({"x", "y", "z", "all"}));
+  d.set("Component", "all", "displaced component", io::oneOf({"x", "y", "z", "all"}));
   d.set("Value", 0.0, "constant part of the prescribed displacement [length]");
   d.set("Linear Coefficients", Array<double>(), "optional gradient: adds c . X (one entry per dimension)");
   d.set("Function", "ramp", kFunctionDoc);
@@ -82,7 +78,7 @@ void addValidModelParameters(ParameterList& valid) {
   ParameterList& neumann = valid.sublist("Neumann Conditions", false, "Surface loads on side sets, named freely");
   ParameterList& n = neumann.sublist("*", false, "a dead load on the reference surface");
   n.set("Side Set", "", std::string(io::kRequired) + "side set name (or sideset_<id>)");
-  n.set("Type", "Pressure", "Pressure (> 0 pushes into the body) or Traction (vector)", oneOf({"Pressure", "Traction"}));
+  n.set("Type", "Pressure", "Pressure (> 0 pushes into the body) or Traction (vector)", io::oneOf({"Pressure", "Traction"}));
   n.set("Value", 0.0, "pressure [force/area] (Type = Pressure)");
   n.set("Traction", Array<double>(), "traction vector [force/area] (Type = Traction)");
   n.set("Function", "ramp", kFunctionDoc);

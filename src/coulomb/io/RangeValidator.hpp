@@ -6,7 +6,10 @@
 #include <limits>
 #include <string>
 
+#include <initializer_list>
+
 #include <Teuchos_ParameterEntryValidator.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
 
 namespace coulomb::io {
 
@@ -32,6 +35,13 @@ private:
 /// Shorthands.
 inline Teuchos::RCP<RangeValidator> positive() {
   return Teuchos::rcp(new RangeValidator(0.0, true, std::numeric_limits<double>::infinity(), true));
+}
+inline Teuchos::RCP<RangeValidator> nonNegative() {
+  return Teuchos::rcp(new RangeValidator(0.0, false, std::numeric_limits<double>::infinity(), true));
+}
+/// An enumeration of allowed strings.
+inline Teuchos::RCP<Teuchos::StringValidator> oneOf(std::initializer_list<std::string> names) {
+  return Teuchos::rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names.begin(), names.end())));
 }
 
 }  // namespace coulomb::io

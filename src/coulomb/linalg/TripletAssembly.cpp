@@ -5,12 +5,10 @@
 #include <string>
 #include <unordered_map>
 
-#include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
-#include <mpi.h>
 
 #include "coulomb/core/Error.hpp"
 #include "coulomb/core/Parallel.hpp"
@@ -18,11 +16,6 @@
 namespace coulomb::linalg {
 
 namespace {
-
-MPI_Comm rawComm(const Teuchos::Comm<int>& comm) {
-  const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
-  return mpi ? static_cast<MPI_Comm>(*mpi->getRawMpiComm()) : MPI_COMM_SELF;
-}
 
 /// Sends record r (`width` doubles each, row GID first) to the owner of its
 /// row; returns the records this rank owns (its own included).
@@ -57,23 +50,10 @@ std::vector<double> toOwners(const std::vector<double>& records, int width, cons
   }
   throwIfAnyRankFailed(comm, failure);
 
-  std::vector<int> sendCounts(size, 0), sendOffsets(size + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) sendCounts[owners[i]] += width;
-  for (int p = 0; p < size; ++p) sendOffsets[p + 1] = sendOffsets[p] + sendCounts[p];
-  std::vector<double> packed(records.size());
-  std::vector<int> cursor(sendOffsets.begin(), sendOffsets.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) {
-    std::copy(records.begin() + i * width, records.begin() + (i + 1) * width, packed.begin() + cursor[owners[i]]);
-    cursor[owners[i]] += width;
-  }
-  std::vector<int> recvCounts(size, 0), recvOffsets(size + 1, 0);
-  const MPI_Comm raw = rawComm(comm);
-  MPI_Alltoall(sendCounts.data(), 1, MPI_INT, recvCounts.data(), 1, MPI_INT, raw);
-  for (int p = 0; p < size; ++p) recvOffsets[p + 1] = recvOffsets[p] + recvCounts[p];
-  std::vector<double> received(recvOffsets[size]);
-  MPI_Alltoallv(packed.data(), sendCounts.data(), sendOffsets.data(), MPI_DOUBLE, received.data(),
-                recvCounts.data(), recvOffsets.data(), MPI_DOUBLE, raw);
-  return received;
+  std::vector<std::vector<double>> send(static_cast<std::size_t>(size));
+  for (std::size_t i = 0; i < n; ++i)
+    send[owners[i]].insert(send[owners[i]].end(), records.begin() + i * width, records.begin() + (i + 1) * width);
+  return exchangeByRank(comm, std::move(send));
 }
 
 /// The triplets of every rank whose row this rank owns, as (row, column,

@@ -46,7 +46,7 @@ Teuchos::RCP<const ParameterList> validDeckParameters() {
     stepping.set("Predictor", "Extrapolate",
                  "first Newton iterate of a step: Extrapolate (the last step's increment, scaled to this step) or "
                  "Previous (the last converged state); prescribed values are set in both",
-                 rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("Extrapolate", "Previous"))));
+                 io::oneOf({"Extrapolate", "Previous"}));
 
     ParameterList& newton = valid->sublist("Newton", false, "Newton convergence");
     const NewtonSettings defaults;
@@ -55,7 +55,7 @@ Teuchos::RCP<const ParameterList> validDeckParameters() {
     newton.set("Relative Tolerance", defaults.relativeTolerance, "converged when ||f|| <= tol ||f_0||",
                range<double>(0.0, 1.0));
     newton.set("Absolute Tolerance", defaults.absoluteTolerance, "converged when ||f|| <= tol [force]",
-               rcp(new io::RangeValidator(0.0, false, std::numeric_limits<double>::infinity(), true)));
+               io::nonNegative());
 
     ParameterList& output = valid->sublist("Output", false, "Results");
     output.set("File", "", "Exodus II result file, relative to the deck's folder (default: deck name with .e)");

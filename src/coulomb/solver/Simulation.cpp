@@ -134,15 +134,15 @@ void Simulation::writeStep(double time, const std::vector<double>& stepGlobals) 
 }
 
 void Simulation::reportContact(RunSummary& summary) {
-  const auto values = contact_->globals();  // per pair: force components, then the active count
   const int dim = mesh_->dimension();
   summary.pairMaximumActive.resize(contact_->pairs().size(), 0);
   for (std::size_t p = 0; p < contact_->pairs().size(); ++p) {
-    const long long active = static_cast<long long>(values[p * (dim + 1) + dim]);
+    const auto& pair = contact_->pairSummaries()[p];
+    const auto active = static_cast<long long>(pair.activeSet.active);
     summary.pairMaximumActive[p] = std::max(summary.pairMaximumActive[p], active);
     if (!console_) continue;
     *console_ << "  contact '" << contact_->pairs()[p]->settings().name << "': " << active << " active nodes, force (";
-    for (int c = 0; c < dim; ++c) *console_ << (c ? ", " : "") << std::setprecision(6) << values[p * (dim + 1) + c];
+    for (int c = 0; c < dim; ++c) *console_ << (c ? ", " : "") << std::setprecision(6) << pair.slaveForce[c];
     *console_ << ")\n" << std::defaultfloat;
   }
 }
