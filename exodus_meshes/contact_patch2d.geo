@@ -45,3 +45,8 @@ Physical Curve("master", 4) = {3};   // base top, y = 0.5
 Physical Curve("slave", 5) = {5};    // punch bottom, y = 0.5
 Physical Curve("top", 6) = {7};
 Physical Curve("left", 7) = {4, 8};  // x = 0, both bodies
+// The sides of each body alone (the frictional patch tests load them).
+Physical Curve("base_left", 8) = {4};
+Physical Curve("base_right", 9) = {2};
+Physical Curve("punch_left", 10) = {8};
+Physical Curve("punch_right", 11) = {6};

@@ -10,54 +10,13 @@
 #include <fstream>
 #include <sstream>
 
+#include "ContactTestSupport.hpp"
 #include "TestSupport.hpp"
 #include "coulomb/contact/ContactModel.hpp"
 #include "coulomb/io/ExodusResults.hpp"
 
 namespace coulomb::test {
 namespace {
-
-std::string deckPath(const std::string& name) { return std::string(COULOMB_SOURCE_DIR) + "/xml/" + name + ".xml"; }
-
-/// The text of a shipped deck with its mesh path made absolute, to be edited.
-struct ShippedDeck {
-  std::string text;
-  ShippedDeck(const std::string& name, const std::string& mesh) {
-    std::ifstream in(deckPath(name));
-    std::stringstream content;
-    content << in.rdbuf();
-    text = content.str();
-    replace("../exodus_meshes/" + mesh, shippedMesh(mesh));
-  }
-  /// Replaces the first occurrence of `from` (which must be there).
-  void replace(const std::string& from, const std::string& to) {
-    const auto at = text.find(from);
-    ASSERT_NE(at, std::string::npos) << from;
-    text.replace(at, from.size(), to);
-  }
-};
-
-struct ContactRun {
-  std::unique_ptr<solver::Simulation> simulation;
-  solver::RunSummary summary;
-  io::ExodusResults results;  ///< rank 0 only
-};
-
-ContactRun runDeck(const std::string& name) {
-  ContactRun run;
-  const std::string output = scratchDirectory("contact_" + name) + "/" + name + ".e";
-  run.simulation = std::make_unique<solver::Simulation>(deckPath(name), worldComm(), nullptr, output);
-  run.summary = run.simulation->run();
-  if (worldComm()->getRank() == 0) run.results = io::readExodusResults(output);
-  return run;
-}
-
-double lastGlobal(const io::ExodusResults& r, const std::string& name) {
-  return r.global.back()[r.globalIndex(name)];
-}
-const std::vector<double>& lastNodal(const io::ExodusResults& r, const std::string& name) {
-  return r.nodal.back()[r.nodalIndex(name)];
-}
 
 /// Hertz quantities at the measured load: a and p0 of theory, and the
 /// least-squares fit p^2 = p0^2 (1 - r^2 / a^2) over the active nodes with

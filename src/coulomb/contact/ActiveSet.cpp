@@ -14,6 +14,8 @@ const char* toString(ContactState state) {
       return "Inactive";
     case ContactState::Active:
       return "Active";
+    case ContactState::Stick:
+      return "Stick";
   }
   return "Unknown";
 }
@@ -34,17 +36,37 @@ ContactState penaltyContactState(double weightedGap) {
   return weightedGap <= 0.0 ? ContactState::Active : ContactState::Inactive;
 }
 
+ContactState stickSlipState(double tangentNorm, double threshold, ContactState previous, double slipThreshold) {
+  if (threshold <= 0.0) return kSlip;
+  const double limit = previous == kSlip ? (1.0 - slipThreshold) * threshold : threshold;
+  return tangentNorm > limit ? kSlip : ContactState::Stick;
+}
+
 ActiveSetSummary& ActiveSetSummary::operator+=(const ActiveSetSummary& other) {
   nodes += other.nodes;
   active += other.active;
   inactive += other.inactive;
+  stick += other.stick;
   changed += other.changed;
+  stickSlipChanged += other.stickSlipChanged;
   return *this;
 }
 
+void countState(ActiveSetSummary& summary, ContactState state, ContactState previous) {
+  ++summary.nodes;
+  if (isActive(state)) ++summary.active;
+  else ++summary.inactive;
+  if (state == ContactState::Stick) ++summary.stick;
+  if (isActive(state) != isActive(previous)) ++summary.changed;
+  else if (state != previous) ++summary.stickSlipChanged;
+}
+
 std::ostream& operator<<(std::ostream& out, const ActiveSetSummary& summary) {
-  return out << "nodes " << summary.nodes << ": active " << summary.active << ", inactive " << summary.inactive
-             << ", changed " << summary.changed;
+  out << "nodes " << summary.nodes << ": active " << summary.active << ", inactive " << summary.inactive
+      << ", changed " << summary.changed;
+  if (summary.stick > 0 || summary.stickSlipChanged > 0)
+    out << ", stick " << summary.stick << ", stick/slip changed " << summary.stickSlipChanged;
+  return out;
 }
 
 ActiveSetSummary summarizeActiveSet(const std::vector<ContactState>& current,
@@ -53,14 +75,7 @@ ActiveSetSummary summarizeActiveSet(const std::vector<ContactState>& current,
                   "contact: active set sizes differ (" << current.size() << " nodes now, " << previous.size()
                                                        << " before)");
   ActiveSetSummary s;
-  s.nodes = current.size();
-  for (std::size_t i = 0; i < current.size(); ++i) {
-    if (current[i] == ContactState::Active)
-      ++s.active;
-    else
-      ++s.inactive;
-    if (!previous.empty() && previous[i] != current[i]) ++s.changed;
-  }
+  for (std::size_t i = 0; i < current.size(); ++i) countState(s, current[i], previous.empty() ? current[i] : previous[i]);
   return s;
 }
 

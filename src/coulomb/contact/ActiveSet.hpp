@@ -32,10 +32,17 @@
 
 namespace coulomb::contact {
 
-/// @brief Contact state of one slave node (Slip/Stick to come with friction).
-enum class ContactState : int { Inactive = 0, Active = 1 };
+/// @brief Contact state of one slave node; the values are the output codes
+/// (contact_state): 0 inactive, 1 active and sliding (frictionless contact,
+/// or the slip branch of a frictional law), 2 active and sticking.
+enum class ContactState : int { Inactive = 0, Active = 1, Stick = 2 };
+/// The frictional name of the sliding active state.
+inline constexpr ContactState kSlip = ContactState::Active;
 
-/// "Inactive" / "Active".
+/// Active (sliding or sticking).
+inline bool isActive(ContactState state) { return state != ContactState::Inactive; }
+
+/// "Inactive" / "Active" / "Stick".
 const char* toString(ContactState state);
 std::ostream& operator<<(std::ostream& out, ContactState state);
 
@@ -49,22 +56,36 @@ ContactState almContactState(double lambdaN, double weightedGap, double D, doubl
 /// @brief Penalty update rule (4.74): Active iff g~ <= 0 (threshold eps_n g~).
 ContactState penaltyContactState(double weightedGap);
 
+/// @brief Stick/slip update rule of an active node (seed 4.75-4.77) with the
+/// slip hysteresis: `tangentNorm` = |augmented tangential multiplier|
+/// (traction), `threshold` = the friction law's threshold (traction, >= 0).
+/// A node that slipped at the previous iterate keeps slipping while
+/// tangentNorm > (1 - slipThreshold) × threshold; any other node slips when
+/// tangentNorm > threshold. A zero threshold (frictionless, mu = 0) always
+/// slips. Returns Active (= slip) or Stick.
+ContactState stickSlipState(double tangentNorm, double threshold, ContactState previous, double slipThreshold);
+
 /// @brief Per-interface summary of an active set.
 struct ActiveSetSummary {
   std::size_t nodes = 0;     ///< number of slave nodes
-  std::size_t active = 0;    ///< nodes in the Active state
+  std::size_t active = 0;    ///< nodes in an active state (sliding or sticking)
   std::size_t inactive = 0;  ///< nodes in the Inactive state
-  std::size_t changed = 0;   ///< nodes whose state differs from the previous set
-  /// Converged active set (Algorithm, line 19): no node changed.
-  bool unchanged() const { return changed == 0; }
+  std::size_t stick = 0;     ///< active nodes that stick (frictional pairs)
+  std::size_t changed = 0;   ///< nodes that changed between inactive and active
+  std::size_t stickSlipChanged = 0;  ///< active nodes that changed between stick and slip
+  /// Converged active and stick/slip sets (Algorithm 3, line 19): no node changed.
+  bool unchanged() const { return changed == 0 && stickSlipChanged == 0; }
   bool operator==(const ActiveSetSummary& other) const {
-    return nodes == other.nodes && active == other.active && inactive == other.inactive &&
-           changed == other.changed;
+    return nodes == other.nodes && active == other.active && inactive == other.inactive && stick == other.stick &&
+           changed == other.changed && stickSlipChanged == other.stickSlipChanged;
   }
   bool operator!=(const ActiveSetSummary& other) const { return !(*this == other); }
   /// Adds the counts of another part (e.g. another rank's nodes).
   ActiveSetSummary& operator+=(const ActiveSetSummary& other);
 };
+
+/// Counts `state` (now) against `previous` into the summary.
+void countState(ActiveSetSummary& summary, ContactState state, ContactState previous);
 
 /// "nodes 10: active 4, inactive 6, changed 1"
 std::ostream& operator<<(std::ostream& out, const ActiveSetSummary& summary);

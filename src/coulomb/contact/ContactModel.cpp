@@ -29,6 +29,12 @@ ContactModel::ContactModel(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>
 
 ContactModel::~ContactModel() = default;
 
+bool ContactModel::anyFrictional() const {
+  for (const auto& pair : pairs_)
+    if (pair->frictional()) return true;
+  return false;
+}
+
 bool ContactModel::needsNonsymmetricSolver() const {
   for (const auto& pair : pairs_)
     if (pair->settings().formulation == ContactFormulation::ALM) return true;
@@ -50,7 +56,7 @@ void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool free
   Teuchos::TimeMonitor scope(*timer);
   contributions_ = ContactContributions();
   summary_ = ContactIterationSummary();
-  double normal2 = 0, force2 = 0;
+  double normal2 = 0, force2 = 0, stick2 = 0, slip2 = 0;
   for (std::size_t p = 0; p < pairs_.size(); ++p) {
     // Simplified semi-smooth Newton: the set moves at the predictor and the first iterate only.
     const bool updateSet =
@@ -59,6 +65,9 @@ void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool free
     summary_.activeSet += pairSummaries_[p].activeSet;
     normal2 += pairSummaries_[p].normalResidual2;
     force2 += pairSummaries_[p].contactForce2;
+    stick2 += pairSummaries_[p].stickResidual2;
+    slip2 += pairSummaries_[p].slipResidual2;
+    summary_.frictional = summary_.frictional || pairs_[p]->frictional();
   }
   ++updatesInStep_;
   // Simplified semi-smooth Newton: a frozen set that the update rule no
@@ -73,8 +82,10 @@ void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool free
   }
   summary_.normalResidual = std::sqrt(normal2);
   summary_.contactForce = std::sqrt(force2);
+  summary_.stickResidual = std::sqrt(stick2);
+  summary_.slipResidual = std::sqrt(slip2);
 
-  const bool local = !contributions_.transform.empty() || !contributions_.contactStiffness.empty() ||
+  const bool local = !contributions_.transform.empty() || !contributions_.tangentTransform.empty() || !contributions_.contactStiffness.empty() ||
                      !contributions_.constraint.empty() || !contributions_.contactResidual.empty() ||
                      !contributions_.constraintResidual.empty();
   contributes_ = anyRank(*map_->getComm(), local);
@@ -116,7 +127,8 @@ Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMat
   // hash map first: the slave nodes coupled to one master row share most of
   // their columns, so this emits each column once per row.
   std::map<GlobalOrdinal, std::vector<std::pair<GlobalOrdinal, double>>> transformRows;
-  for (const auto& t : contributions_.transform) transformRows[t.row].push_back({t.column, t.value});
+  for (const auto* part : {&contributions_.transform, &contributions_.tangentTransform})
+    for (const auto& t : *part) transformRows[t.row].push_back({t.column, t.value});
   std::unordered_map<GlobalOrdinal, double> combination;
   for (const auto& [targetRow, terms] : transformRows) {
     combination.clear();
@@ -140,13 +152,17 @@ Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMat
 }
 
 bool ContactModel::converged() const {
-  return summary_.activeSet.unchanged() && summary_.normalConverged(settings_);
+  return summary_.activeSet.unchanged() && summary_.normalConverged(settings_) &&
+         summary_.tangentialConverged(settings_);
 }
 
 std::vector<std::string> ContactModel::nodalFieldNames() const {
   std::vector<std::string> names = {"contact_pressure", "contact_gap", "contact_weighted_gap", "contact_state"};
   for (int c = 0; c < dim_; ++c) names.push_back(std::string("contact_normal_") + kComponents[c]);
   for (int c = 0; c < dim_; ++c) names.push_back(std::string("contact_multiplier_") + kComponents[c]);
+  if (anyFrictional())
+    for (const char* field : {"contact_tangential_traction_", "contact_weighted_slip_", "contact_slip_"})
+      for (int c = 0; c < dim_; ++c) names.push_back(std::string(field) + kComponents[c]);
   return names;
 }
 
@@ -164,6 +180,11 @@ void ContactModel::nodalFields(const Teuchos::RCP<const Map>& ownedNodeMap, Mult
       for (int c = 0; c < dim_; ++c) {
         view[4 + c][i] = o.normal[c];
         view[4 + dim_ + c][i] = o.multiplier[c];
+        if (anyFrictional()) {
+          view[4 + 2 * dim_ + c][i] = o.tangentialTraction[c];
+          view[4 + 3 * dim_ + c][i] = o.weightedSlip[c];
+          view[4 + 4 * dim_ + c][i] = o.slip[c];
+        }
       }
     }
 }
@@ -173,15 +194,31 @@ std::vector<std::string> ContactModel::globalNames() const {
   for (const auto& pair : pairs_) {
     for (int c = 0; c < dim_; ++c) names.push_back("contact_force_" + pair->settings().name + "_" + kComponents[c]);
     names.push_back("contact_active_nodes_" + pair->settings().name);
+    if (pair->frictional()) {
+      names.push_back("contact_normal_force_" + pair->settings().name);
+      names.push_back("contact_tangential_force_" + pair->settings().name);
+      names.push_back("contact_stick_nodes_" + pair->settings().name);
+    }
   }
   return names;
 }
 
 std::vector<double> ContactModel::globals() const {
   std::vector<double> values;
-  for (const auto& s : pairSummaries_) {
+  for (std::size_t p = 0; p < pairs_.size(); ++p) {
+    const auto& s = pairSummaries_[p];
     for (int c = 0; c < dim_; ++c) values.push_back(s.slaveForce[c]);
     values.push_back(static_cast<double>(s.activeSet.active));
+    if (pairs_[p]->frictional()) {
+      double normal2 = 0, tangential2 = 0;
+      for (int c = 0; c < 3; ++c) {
+        normal2 += s.normalForce[c] * s.normalForce[c];
+        tangential2 += s.tangentialForce[c] * s.tangentialForce[c];
+      }
+      values.push_back(std::sqrt(normal2));
+      values.push_back(std::sqrt(tangential2));
+      values.push_back(static_cast<double>(s.activeSet.stick));
+    }
   }
   return values;
 }

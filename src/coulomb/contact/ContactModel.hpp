@@ -24,9 +24,17 @@ struct ContactIterationSummary {
   ActiveSetSummary activeSet;
   double normalResidual = 0;  ///< ||eps_n t g~|| over active ALM nodes [force]
   double contactForce = 0;    ///< ||f_j|| over active slave nodes [force]
+  double stickResidual = 0;   ///< ||stick rows|| (frictional pairs) [force]
+  double slipResidual = 0;    ///< ||slip rows|| (frictional pairs) [force]
+  bool frictional = false;    ///< some pair has friction (the stick/slip columns are printed)
   /// The normal constraint test of ContactSettings.
   bool normalConverged(const ContactSettings& s) const {
     return normalResidual <= s.normalRelativeTolerance * contactForce + s.normalAbsoluteTolerance;
+  }
+  /// The stick and slip tests of (4.78).
+  bool tangentialConverged(const ContactSettings& s) const {
+    return stickResidual <= s.stickRelativeTolerance * contactForce + s.stickAbsoluteTolerance &&
+           slipResidual <= s.slipRelativeTolerance * contactForce + s.slipAbsoluteTolerance;
   }
 };
 
@@ -40,6 +48,8 @@ public:
   bool empty() const { return pairs_.empty(); }
   const ContactSettings& settings() const { return settings_; }
   const std::vector<std::unique_ptr<ContactPair>>& pairs() const { return pairs_; }
+  /// True when some pair has friction.
+  bool anyFrictional() const;
   /// True when some pair is ALM: the condensed tangent is not symmetric.
   bool needsNonsymmetricSolver() const;
 

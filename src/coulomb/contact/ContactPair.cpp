@@ -125,6 +125,8 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
   state_.assign(owned, ContactState::Inactive);
   lambdaN_.assign(owned, 0.0);
   pressure_.assign(owned, 0.0);
+  traction_.assign(owned, {0.0, 0.0, 0.0});
+  weightedSlip_ = slipIncrement_ = accumulatedSlip_ = stepStartAccumulatedSlip_ = traction_;
   beginStep();
 }
 
@@ -132,6 +134,21 @@ ContactPair::~ContactPair() = default;
 
 void ContactPair::beginStep() {
   searched_ = false;
+  // The last update was at the converged state of the previous step: its
+  // operators and coordinates are the D^t, M^t, x^t of the slip (4.69).
+  stepStartMortar_ = mortar_;
+  stepStartX_ = x_.x.empty() ? referenceConfiguration(*interface_) : x_;
+  for (std::size_t i = 0; i < state_.size(); ++i) {
+    for (int c = 0; c < 3; ++c) accumulatedSlip_[i][c] = stepStartAccumulatedSlip_[i][c] + slipIncrement_[i][c];
+    slipIncrement_[i] = weightedSlip_[i] = {0.0, 0.0, 0.0};
+  }
+  stepStartAccumulatedSlip_ = accumulatedSlip_;
+  // Slip reset policy: slipping nodes start the step as stick every n-th step.
+  const int n = settings_.slipResetFrequency;
+  if (frictional() && n > 0 && steps_ % n == 0)
+    for (auto& state : state_)
+      if (state == kSlip) state = ContactState::Stick;
+  ++steps_;
   stepStartState_ = state_;
   stepStartLambdaN_ = lambdaN_;
 }
@@ -139,7 +156,13 @@ void ContactPair::beginStep() {
 void ContactPair::restoreStep() {
   state_ = stepStartState_;
   lambdaN_ = stepStartLambdaN_;
+  for (std::size_t i = 0; i < state_.size(); ++i) slipIncrement_[i] = weightedSlip_[i] = {0.0, 0.0, 0.0};
   searched_ = false;
+}
+
+bool ContactPair::isPrescribed(long long node, int c) const {
+  const int i = interface_->interfaceNodeIndex(node);
+  return i >= 0 && prescribed_[i][c];
 }
 
 void ContactPair::searchAndIntegrate(const Vector& u) {
@@ -175,7 +198,7 @@ void ContactPair::differentiateActive() {
   const auto& owned = interface_->ownedSlaveNodes();
   std::vector<int> local(slaveNodes.size(), 0), active(slaveNodes.size(), 0);
   for (std::size_t i = 0; i < owned.size(); ++i)
-    if (state_[i] == ContactState::Active) local[owned[i]] = 1;
+    if (isActive(state_[i])) local[owned[i]] = 1;
   Teuchos::reduceAll(*interface_->comm(), Teuchos::REDUCE_MAX, static_cast<int>(local.size()), local.data(),
                      active.data());
   // The searched slave faces with an active node: all the faces of an active
@@ -214,6 +237,7 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
   // active set. Stage 2 (derivatives, Sacado): only the faces around active
   // nodes — the rest of a large slave surface costs a plain double pass.
   searchAndIntegrate(u);
+  if (frictional()) return updateFrictional(bulkResidual, updateSet, out);
   const bool alm = settings_.formulation == ContactFormulation::ALM;
   const auto r = bulkResidual.getData(0);
   const auto& map = *dofMap_;
@@ -305,6 +329,7 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
     for (int c = 0; c < dim_; ++c) force[c] = alm ? k_ * t * D * lambdaN * n[c] : -pressure_[i] * t * D * n[c];
     for (int c = 0; c < dim_; ++c) {
       summary.slaveForce[c] += force[c];
+      summary.normalForce[c] += force[c];
       summary.contactForce2 += force[c] * force[c];
     }
 
@@ -409,27 +434,43 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
     }
   }
 
-  // Sum over ranks.
+  reduceSummary(summary);
+  return summary;
+}
+
+void ContactPair::reduceSummary(PairIterationSummary& summary) const {
   const auto& comm = *interface_->comm();
-  double values[6] = {summary.normalResidual2, summary.contactForce2, summary.slaveForce[0], summary.slaveForce[1],
-                      summary.slaveForce[2], 0};
-  double totals[6];
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 6, values, totals);
+  std::vector<double> values = {summary.normalResidual2, summary.contactForce2, summary.stickResidual2,
+                                summary.slipResidual2};
+  for (const auto* v : {&summary.slaveForce, &summary.normalForce, &summary.tangentialForce})
+    values.insert(values.end(), v->begin(), v->end());
+  std::vector<double> totals(values.size());
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(values.size()), values.data(), totals.data());
   summary.normalResidual2 = totals[0];
   summary.contactForce2 = totals[1];
-  for (int c = 0; c < 3; ++c) summary.slaveForce[c] = totals[2 + c];
-  long long violations = summary.violations;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 1, &violations, &summary.violations);
-  long long counts[4] = {static_cast<long long>(summary.activeSet.nodes), static_cast<long long>(summary.activeSet.active),
+  summary.stickResidual2 = totals[2];
+  summary.slipResidual2 = totals[3];
+  for (int c = 0; c < 3; ++c) {
+    summary.slaveForce[c] = totals[4 + c];
+    summary.normalForce[c] = totals[7 + c];
+    summary.tangentialForce[c] = totals[10 + c];
+  }
+  long long counts[7] = {summary.violations,
+                         static_cast<long long>(summary.activeSet.nodes),
+                         static_cast<long long>(summary.activeSet.active),
                          static_cast<long long>(summary.activeSet.inactive),
-                         static_cast<long long>(summary.activeSet.changed)};
-  long long countTotals[4];
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 4, counts, countTotals);
-  summary.activeSet.nodes = countTotals[0];
-  summary.activeSet.active = countTotals[1];
-  summary.activeSet.inactive = countTotals[2];
-  summary.activeSet.changed = countTotals[3];
-  return summary;
+                         static_cast<long long>(summary.activeSet.changed),
+                         static_cast<long long>(summary.activeSet.stick),
+                         static_cast<long long>(summary.activeSet.stickSlipChanged)};
+  long long countTotals[7];
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 7, counts, countTotals);
+  summary.violations = countTotals[0];
+  summary.activeSet.nodes = countTotals[1];
+  summary.activeSet.active = countTotals[2];
+  summary.activeSet.inactive = countTotals[3];
+  summary.activeSet.changed = countTotals[4];
+  summary.activeSet.stick = countTotals[5];
+  summary.activeSet.stickSlipChanged = countTotals[6];
 }
 
 std::vector<ContactPair::NodeOutput> ContactPair::nodeOutput() const {
@@ -446,6 +487,16 @@ std::vector<ContactPair::NodeOutput> ContactPair::nodeOutput() const {
     }
     if (static_cast<std::size_t>(owned[i]) < normals_.size()) o.normal = normals_[owned[i]].n;
     for (int c = 0; c < 3; ++c) o.multiplier[c] = lambdaN_[i] * o.normal[c];
+    if (frictional()) {
+      double tn = 0;
+      for (int c = 0; c < 3; ++c) tn += traction_[i][c] * o.normal[c];
+      for (int c = 0; c < 3; ++c) {
+        o.multiplier[c] = traction_[i][c] / k_;
+        o.tangentialTraction[c] = traction_[i][c] - tn * o.normal[c];
+        o.weightedSlip[c] = weightedSlip_[i][c];
+        o.slip[c] = stepStartAccumulatedSlip_[i][c] + slipIncrement_[i][c];
+      }
+    }
     out.push_back(o);
   }
   return out;

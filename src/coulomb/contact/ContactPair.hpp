@@ -52,6 +52,10 @@ struct SaddlePointContributions {
 /// @brief Contributions of one or more pairs to the condensed system.
 struct ContactContributions {
   std::vector<linalg::MatrixTriplet> transform;   ///< T - I
+  /// Added to T - I for the tangent only: frictional rows are nonlinear in
+  /// the bulk residual r (their value is in constraintResidual, their
+  /// derivative with respect to r combines rows of K here).
+  std::vector<linalg::MatrixTriplet> tangentTransform;
   std::vector<linalg::MatrixTriplet> constraint;  ///< G
   std::vector<linalg::VectorEntry> constraintResidual;  ///< g
   std::vector<linalg::MatrixTriplet> contactStiffness;  ///< K_c
@@ -64,7 +68,11 @@ struct PairIterationSummary {
   ActiveSetSummary activeSet;
   double normalResidual2 = 0;  ///< sum of (eps_n t g~_j)^2 over active ALM nodes
   double contactForce2 = 0;    ///< sum of |f_j|^2 over active slave nodes
+  double stickResidual2 = 0;   ///< sum of the squared stick rows (frictional pairs)
+  double slipResidual2 = 0;    ///< sum of the squared slip rows (frictional pairs)
   std::array<double, 3> slaveForce{};  ///< total contact force on the slave body
+  std::array<double, 3> normalForce{};  ///< its normal part, sum of the nodal normal forces
+  std::array<double, 3> tangentialForce{};  ///< its tangential part
   /// Nodes whose frozen state (simplified semi-smooth Newton) disagrees with
   /// the update rule at this iterate; 0 when the set was updated.
   long long violations = 0;
@@ -99,13 +107,29 @@ public:
     long long node = -1;
     double pressure = 0, weightedGap = 0, gap = 0;
     std::array<double, 3> normal{}, multiplier{};
+    /// Frictional pairs: tangential traction on the slave, weighted slip
+    /// increment of the step (seed sign, 4.69b), accumulated slip of the
+    /// slave relative to the master (length).
+    std::array<double, 3> tangentialTraction{}, weightedSlip{}, slip{};
     ContactState state = ContactState::Inactive;
   };
   std::vector<NodeOutput> nodeOutput() const;
 
+  /// Friction law, stick/slip state and slip of this pair (FrictionalNode.hpp).
+  bool frictional() const { return settings_.frictional(); }
+
 private:
   void searchAndIntegrate(const Vector& u);
   void differentiateActive();
+  /// update() for frictional pairs (ContactPairFriction.cpp).
+  PairIterationSummary updateFrictional(const Vector& bulkResidual, bool updateSet, ContactContributions& out);
+  /// Weighted slip w_j of the step (seed sign) and, when `derivative` is
+  /// given, dw_c / dx as three rows.
+  std::array<double, 3> weightedSlip(const NodalMortarEntry& entry, std::array<DerivativeRow, 3>* derivative) const;
+  /// Sums the summary over ranks.
+  void reduceSummary(PairIterationSummary& summary) const;
+  GlobalOrdinal dofRow(long long node, int c) const { return static_cast<GlobalOrdinal>(dim_ * node + c); }
+  bool isPrescribed(long long node, int c) const;
 
   const mesh::Mesh& mesh_;
   Teuchos::RCP<const Map> dofMap_;
@@ -129,6 +153,14 @@ private:
   std::vector<ContactState> state_, stepStartState_;
   std::vector<double> lambdaN_, stepStartLambdaN_;
   std::vector<double> pressure_;
+  // Friction: the mortar operators and interface coordinates of the last
+  // converged state (D^t, M^t, x^t of 4.69), per owned node the traction,
+  // the weighted slip of the step and the slip accumulated over the steps.
+  NodalMortarQuantities stepStartMortar_;
+  InterfaceConfiguration stepStartX_;
+  int steps_ = 0;
+  std::vector<std::array<double, 3>> traction_, weightedSlip_, slipIncrement_, accumulatedSlip_,
+      stepStartAccumulatedSlip_;
 };
 
 }  // namespace coulomb::contact

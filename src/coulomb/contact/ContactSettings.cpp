@@ -3,6 +3,7 @@
 #include <limits>
 
 #include <Teuchos_ParameterList.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "coulomb/core/Error.hpp"
 #include "coulomb/io/ParameterValidation.hpp"
@@ -24,6 +25,16 @@ void addValidContactParameters(ParameterList& valid) {
               io::positive());
   contact.set("Normal Absolute Tolerance", defaults.normalAbsoluteTolerance,
               "absolute part of the normal-constraint test [force]", io::positive());
+  contact.set("Stick Relative Tolerance", defaults.stickRelativeTolerance,
+              "converged when the stick rows eps_n t |w_tau| <= this x ||contact forces|| + the absolute tolerance",
+              io::positive());
+  contact.set("Stick Absolute Tolerance", defaults.stickAbsoluteTolerance, "absolute part of the stick test [force]",
+              io::positive());
+  contact.set("Slip Relative Tolerance", defaults.slipRelativeTolerance,
+              "converged when the slip rows |f_tau - t D Θ d| <= this x ||contact forces|| + the absolute tolerance",
+              io::positive());
+  contact.set("Slip Absolute Tolerance", defaults.slipAbsoluteTolerance, "absolute part of the slip test [force]",
+              io::positive());
   ParameterList& pairs = contact.sublist("Pairs", false, "One sublist per contact pair, named freely");
   ParameterList& pair = pairs.sublist("*", false, "a slave/master pair of side sets");
   const ContactPairSettings d;
@@ -46,6 +57,30 @@ void addValidContactParameters(ParameterList& valid) {
   pair.set("Search Radius Factor", d.searchRadiusFactor,
            "search radius = this x the largest slave face diameter: must exceed the gap closed in one step",
            io::positive());
+  pair.set("Friction Law", "None",
+           "None: frictionless; Coulomb: |t_tau| <= mu p; Tresca: |t_tau| <= Tresca Threshold (ALM only)",
+           io::oneOf({"None", "Coulomb", "Tresca"}));
+  pair.set("Friction Coefficient", d.friction.coefficient, "Coulomb's mu (0: pure slip)", io::nonNegative());
+  pair.set("Tresca Threshold", d.friction.threshold,
+           "Tresca's limit of the tangential traction [pressure], required (> 0) with Friction Law = Tresca",
+           io::nonNegative());
+  pair.set("Tangent Factor", d.tangentFactor,
+           "kappa: tangential penalty eps_tau = kappa eps_n of the stick/slip test and the slip direction",
+           io::positive());
+  pair.set("Slip Threshold", d.slipThreshold,
+           "hysteresis: a slipping node sticks again only below (1 - this) x the friction threshold", io::nonNegative());
+  pair.set("Slip Augmentation Coefficient", d.slipAugmentation,
+           "alpha: weight of the slip in the augmented tangential multiplier of slipping nodes (> 0: the slip "
+           "direction is a Newton unknown)",
+           io::positive());
+  pair.set("Slip Reset Frequency", d.slipResetFrequency,
+           "slipping nodes restart each n-th load step as stick (the thesis' choice, n = 1); 0: never reset",
+           Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(0, 1000000)));
+  pair.set("Slip Measure", "Objective",
+           "Objective: weighted slip from the change of the mortar operators (4.69b, frame indifferent); "
+           "Non-Objective: from the displacement increments (4.65a)",
+           io::oneOf({"Objective", "Non-Objective"}));
+  pair.set("Pure Slip", d.pureSlip, "active nodes slide without friction whatever the law (automatic when mu = 0)");
 }
 
 ContactSettings parseContactSettings(const ParameterList& deck) {
@@ -57,6 +92,10 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
   const ParameterList& validContact = valid.sublist("Contact");
   settings.normalRelativeTolerance = io::valueOrDefault<double>(user, validContact, "Normal Relative Tolerance");
   settings.normalAbsoluteTolerance = io::valueOrDefault<double>(user, validContact, "Normal Absolute Tolerance");
+  settings.stickRelativeTolerance = io::valueOrDefault<double>(user, validContact, "Stick Relative Tolerance");
+  settings.stickAbsoluteTolerance = io::valueOrDefault<double>(user, validContact, "Stick Absolute Tolerance");
+  settings.slipRelativeTolerance = io::valueOrDefault<double>(user, validContact, "Slip Relative Tolerance");
+  settings.slipAbsoluteTolerance = io::valueOrDefault<double>(user, validContact, "Slip Absolute Tolerance");
   if (!user.isSublist("Pairs")) return settings;
   const ParameterList& pairs = user.sublist("Pairs");
   const ParameterList& v = validContact.sublist("Pairs").sublist("*");
@@ -76,6 +115,30 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
                                                                                          : SemiSmoothNewton::Simplified;
     s.searchEveryIteration = io::valueOrDefault<bool>(p, v, "Search Every Iteration");
     s.searchRadiusFactor = io::valueOrDefault<double>(p, v, "Search Radius Factor");
+    const std::string law = io::valueOrDefault<std::string>(p, v, "Friction Law");
+    s.friction.type = law == "Coulomb"  ? FrictionLawType::Coulomb
+                      : law == "Tresca" ? FrictionLawType::Tresca
+                                        : FrictionLawType::None;
+    s.friction.coefficient = io::valueOrDefault<double>(p, v, "Friction Coefficient");
+    s.friction.threshold = io::valueOrDefault<double>(p, v, "Tresca Threshold");
+    s.tangentFactor = io::valueOrDefault<double>(p, v, "Tangent Factor");
+    s.slipThreshold = io::valueOrDefault<double>(p, v, "Slip Threshold");
+    s.slipAugmentation = io::valueOrDefault<double>(p, v, "Slip Augmentation Coefficient");
+    s.slipResetFrequency = io::valueOrDefault<int>(p, v, "Slip Reset Frequency");
+    s.slipMeasure = io::valueOrDefault<std::string>(p, v, "Slip Measure") == "Objective" ? SlipMeasure::Objective
+                                                                                      : SlipMeasure::NonObjective;
+    s.pureSlip = io::valueOrDefault<bool>(p, v, "Pure Slip");
+    const std::string where = "deck: 'Contact/Pairs/" + name + "/";
+    COULOMB_REQUIRE(s.friction.type != FrictionLawType::Tresca || s.friction.threshold > 0.0,
+                    where << "Tresca Threshold' must be > 0 with Friction Law = Tresca, got " << s.friction.threshold);
+    COULOMB_REQUIRE(s.friction.type == FrictionLawType::Coulomb || !p.isParameter("Friction Coefficient"),
+                    where << "Friction Coefficient' is given but 'Friction Law' is not Coulomb");
+    COULOMB_REQUIRE(s.friction.type == FrictionLawType::Tresca || !p.isParameter("Tresca Threshold"),
+                    where << "Tresca Threshold' is given but 'Friction Law' is not Tresca");
+    COULOMB_REQUIRE(s.slipThreshold < 1.0, where << "Slip Threshold' must be < 1, got " << s.slipThreshold);
+    COULOMB_REQUIRE(s.formulation == ContactFormulation::ALM || !s.frictional(),
+                    where << "Friction Law': friction with Formulation = Penalty is not implemented yet; use "
+                             "Formulation = ALM");
     COULOMB_REQUIRE(s.slave != s.master, "deck: 'Contact/Pairs/" << name << "' names side set '" << s.slave
                                                                   << "' as both Slave and Master");
     settings.pairs.push_back(std::move(s));

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "coulomb/contact/FrictionLaw.hpp"
+
 namespace Teuchos {
 class ParameterList;
 }
@@ -24,6 +26,11 @@ enum class ContactFormulation { ALM, Penalty };
 /// opens two more updates.
 enum class SemiSmoothNewton { Full, Simplified };
 
+/// Objective: the weighted slip from the change of the mortar operators
+/// (seed 4.69b), frame indifferent; NonObjective: from the displacement
+/// increments with the current operators (4.65a), kept for comparison.
+enum class SlipMeasure { Objective, NonObjective };
+
 /// @brief One contact pair.
 struct ContactPairSettings {
   std::string name;    ///< the deck sublist name (messages, output variable names)
@@ -36,6 +43,16 @@ struct ContactPairSettings {
   SemiSmoothNewton semiSmooth = SemiSmoothNewton::Full;
   bool searchEveryIteration = false;  ///< else once per load step
   double searchRadiusFactor = 1.0;    ///< radius = factor × largest slave face diameter
+  // Friction (ALM only; FrictionalNode.hpp).
+  FrictionLaw friction;               ///< law and its parameters (None: frictionless)
+  double tangentFactor = 1.0;         ///< kappa: eps_tau = kappa eps_n
+  double slipThreshold = 0.02;        ///< hysteresis of the slip -> stick transition
+  double slipAugmentation = 1.0;      ///< alpha of the augmented tangential multiplier of slipping nodes
+  int slipResetFrequency = 1;         ///< slipping nodes restart as stick every n steps (0: never)
+  SlipMeasure slipMeasure = SlipMeasure::Objective;
+  bool pureSlip = false;              ///< every active node slides without friction (automatic when mu = 0)
+  /// A frictional pair: a law with a tangential threshold, not in pure slip.
+  bool frictional() const { return !pureSlip && !friction.pureSlip(); }
 };
 
 /// @brief Everything about contact in a deck.
@@ -45,6 +62,11 @@ struct ContactSettings {
   /// relativeTolerance × ||contact forces|| + absoluteTolerance.
   double normalRelativeTolerance = 1e-6;
   double normalAbsoluteTolerance = 1e-8;
+  /// The same tests for the tangential rows of stick and of slip nodes (4.78).
+  double stickRelativeTolerance = 1e-6;
+  double stickAbsoluteTolerance = 1e-8;
+  double slipRelativeTolerance = 1e-6;
+  double slipAbsoluteTolerance = 1e-8;
 };
 
 /// @brief Valid parameters of "Contact" (added to the deck's list).

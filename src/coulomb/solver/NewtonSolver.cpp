@@ -66,7 +66,9 @@ public:
     report_.iterations.push_back(row);
     if (console_) {
       *console_ << "    iter   |residual|    |increment|  lin.it  time[s]";
-      if (contact_) *console_ << "  active changed  |r_normal|  ratio      set";
+      if (contact_) *console_ << "  active changed  |r_normal|  ratio    ";
+      if (contact_ && contact_->anyFrictional()) *console_ << "  stick st/sl   |r_stick|    |r_slip|";
+      if (contact_) *console_ << "  set";
       *console_ << "\n";
       print(row);
     }
@@ -100,6 +102,12 @@ private:
     row.normalResidual = s.normalResidual;
     row.normalRatio = s.contactForce > 0 ? s.normalResidual / s.contactForce : 0.0;
     row.contactConverged = contact_->converged();
+    if (contact_->anyFrictional()) {
+      row.stickNodes = static_cast<long long>(s.activeSet.stick);
+      row.stickSlipChanged = static_cast<long long>(s.activeSet.stickSlipChanged);
+      row.stickResidual = s.stickResidual;
+      row.slipResidual = s.slipResidual;
+    }
   }
   void print(const NewtonIteration& row) const {
     *console_ << "    " << std::setw(4) << row.iteration << std::scientific << std::setprecision(3) << "  "
@@ -111,7 +119,12 @@ private:
     if (row.activeNodes >= 0)
       *console_ << "  " << std::setw(6) << row.activeNodes << "  " << std::setw(7) << row.changedNodes << "  "
                 << std::scientific << std::setprecision(3) << std::setw(10) << row.normalResidual << "  "
-                << std::setw(9) << row.normalRatio << std::defaultfloat << "  " << (row.contactConverged ? "yes" : "no");
+                << std::setw(9) << row.normalRatio << std::defaultfloat;
+    if (row.stickNodes >= 0)
+      *console_ << "  " << std::setw(5) << row.stickNodes << "  " << std::setw(5) << row.stickSlipChanged << "  "
+                << std::scientific << std::setprecision(3) << std::setw(10) << row.stickResidual << "  "
+                << std::setw(10) << row.slipResidual << std::defaultfloat;
+    if (row.activeNodes >= 0) *console_ << "  " << (row.contactConverged ? "yes" : "no");
     *console_ << "\n";
   }
   NewtonReport& report_;

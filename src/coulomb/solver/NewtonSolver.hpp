@@ -34,6 +34,9 @@ struct NewtonIteration {
   // Contact (when present; Fig. 4.23 columns): active nodes, nodes that
   // changed state at this iterate, normal constraint residual, set converged.
   long long activeNodes = -1;
+  long long stickNodes = -1;          ///< frictional runs: active nodes in stick
+  long long stickSlipChanged = -1;    ///< frictional runs: stick <-> slip changes at this iterate
+  double stickResidual = 0, slipResidual = 0;  ///< frictional runs: the tangential groups of (4.78)
   long long changedNodes = 0;
   double normalResidual = 0;
   double normalRatio = 0;   ///< normalResidual / ||contact forces||

@@ -1,0 +1,315 @@
+/// @file ContactPairFriction.cpp
+/// @brief ContactPair::update for frictional pairs (ALM): the weighted slip
+/// of the step (seed 4.69b, or 4.65a), the active and stick/slip sets
+/// (4.73-4.77) and the condensed rows of FrictionalNode.hpp chained with the
+/// derivatives of the mortar quantities. docs/architecture.md, "Frictional
+/// contact", has the system.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include <Tpetra_Map.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "coulomb/contact/ContactPair.hpp"
+#include "coulomb/contact/FrictionalNode.hpp"
+#include "coulomb/core/Error.hpp"
+#include "coulomb/core/Parallel.hpp"
+
+namespace coulomb::contact {
+
+namespace {
+
+/// The 3-wide input of the kernel's dimension.
+template <int dim>
+FrictionalNodeInput<dim> narrow(const std::array<double, 3>& r, const std::array<double, 3>& n,
+                                const std::array<double, 3>& w, double D, double gap,
+                                const std::array<bool, 3>& prescribed) {
+  FrictionalNodeInput<dim> in;
+  for (int c = 0; c < dim; ++c) {
+    in.residual[c] = r[c];
+    in.normal[c] = n[c];
+    in.slip[c] = w[c];
+    in.prescribed[c] = prescribed[c];
+  }
+  in.D = D;
+  in.gap = gap;
+  return in;
+}
+
+/// Kernel results widened to 3 components and the 11 inputs of 3D
+/// (r 0-2, n 3-5, w 6-8, D 9, g~ 10).
+struct Rows {
+  bool usable = false;
+  std::array<double, 3> rows{}, lambda{};
+  std::array<std::array<double, 11>, 3> dRows{}, dLambda{};
+};
+struct State {
+  ContactState state = ContactState::Inactive;
+  double lambdaN = 0;
+  std::array<double, 3> traction{};
+};
+
+template <int dim>
+Rows widenRows(const FrictionalNodeRows<dim>& k) {
+  Rows out;
+  out.usable = k.usable;
+  auto input = [](int i) { return i < dim ? i : i < 2 * dim ? 3 + i - dim : i < 3 * dim ? 6 + i - 2 * dim : 9 + i - 3 * dim; };
+  for (int c = 0; c < dim; ++c) {
+    out.rows[c] = k.rows[c];
+    out.lambda[c] = k.lambda[c];
+    for (int i = 0; i < kFrictionalInputs<dim>; ++i) {
+      out.dRows[c][input(i)] = k.dRows[c][i];
+      out.dLambda[c][input(i)] = k.dLambda[c][i];
+    }
+  }
+  return out;
+}
+
+State decide(int dim, const std::array<double, 3>& r, const std::array<double, 3>& n, const std::array<double, 3>& w,
+             double D, double gap, const std::array<bool, 3>& prescribed, ContactState previous,
+             const FrictionalParameters& p) {
+  State out;
+  auto copy = [&out](const auto& s, int d) {
+    out.state = s.state;
+    out.lambdaN = s.lambdaN;
+    for (int c = 0; c < d; ++c) out.traction[c] = s.traction[c];
+  };
+  if (dim == 2) copy(frictionalState<2>(narrow<2>(r, n, w, D, gap, prescribed), previous, p), 2);
+  else copy(frictionalState<3>(narrow<3>(r, n, w, D, gap, prescribed), previous, p), 3);
+  return out;
+}
+
+Rows rowsOf(int dim, const std::array<double, 3>& r, const std::array<double, 3>& n, const std::array<double, 3>& w,
+            double D, double gap, const std::array<bool, 3>& prescribed, ContactState state,
+            const FrictionalParameters& p) {
+  if (dim == 2) return widenRows<2>(frictionalRows<2>(narrow<2>(r, n, w, D, gap, prescribed), state, p));
+  return widenRows<3>(frictionalRows<3>(narrow<3>(r, n, w, D, gap, prescribed), state, p));
+}
+
+void addScaled(DerivativeRow& to, const DerivativeRow& from, double scale) {
+  if (scale == 0.0) return;
+  for (const auto& [key, value] : from) to[key] += scale * value;
+}
+
+}  // namespace
+
+std::array<double, 3> ContactPair::weightedSlip(const NodalMortarEntry& entry,
+                                                std::array<DerivativeRow, 3>* derivative) const {
+  // Objective (4.69b): w = (D - D^t) x_j - sum_l (M_jl - M^t_jl) x_l.
+  // Non-objective (4.65a, seed sign): w = -[D (x_j - x^t_j) - sum_l M_jl (x_l - x^t_l)].
+  // Without operators of the last converged state (a node that had no
+  // master in reach) only the non-objective measure exists.
+  const NodalMortarEntry* previous = stepStartMortar_.find(entry.node);
+  const bool objective = settings_.slipMeasure == SlipMeasure::Objective && previous != nullptr;
+  auto point = [this](const InterfaceConfiguration& x, long long node) {
+    return x.point(interface_->interfaceNodeIndex(node));
+  };
+  std::array<double, 3> w{};
+  if (derivative)
+    for (auto& row : *derivative) row.clear();
+  const double* xj = point(x_, entry.node);
+  const double* xtj = point(stepStartX_, entry.node);
+  if (objective) {
+    const double dD = entry.D - previous->D;
+    for (int c = 0; c < dim_; ++c) w[c] = dD * xj[c];
+    // Union of the master nodes of now and then.
+    std::map<long long, std::pair<double, double>> masters;
+    for (const auto& [l, m] : entry.M) masters[l].first = m;
+    for (const auto& [l, m] : previous->M) masters[l].second = m;
+    for (const auto& [l, m] : masters) {
+      const double* xl = point(x_, l);
+      for (int c = 0; c < dim_; ++c) w[c] -= (m.first - m.second) * xl[c];
+    }
+    if (derivative)
+      for (int c = 0; c < dim_; ++c) {
+        auto& row = (*derivative)[c];
+        addScaled(row, entry.dD, xj[c]);
+        row[{entry.node, c}] += dD;
+        for (const auto& [l, m] : masters) {
+          const auto dM = entry.dM.find(l);
+          if (dM != entry.dM.end()) addScaled(row, dM->second, -point(x_, l)[c]);
+          row[{l, c}] -= m.first - m.second;
+        }
+      }
+  } else {
+    for (int c = 0; c < dim_; ++c) w[c] = -entry.D * (xj[c] - xtj[c]);
+    for (const auto& [l, m] : entry.M) {
+      const double* xl = point(x_, l);
+      const double* xtl = point(stepStartX_, l);
+      for (int c = 0; c < dim_; ++c) w[c] += m * (xl[c] - xtl[c]);
+    }
+    if (derivative)
+      for (int c = 0; c < dim_; ++c) {
+        auto& row = (*derivative)[c];
+        addScaled(row, entry.dD, -(xj[c] - xtj[c]));
+        row[{entry.node, c}] -= entry.D;
+        for (const auto& [l, m] : entry.M) {
+          const auto dM = entry.dM.find(l);
+          if (dM != entry.dM.end()) addScaled(row, dM->second, point(x_, l)[c] - point(stepStartX_, l)[c]);
+          row[{l, c}] += m;
+        }
+      }
+  }
+  return w;
+}
+
+PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, bool updateSet,
+                                                   ContactContributions& out) {
+  const auto r = bulkResidual.getData(0);
+  const auto& map = *dofMap_;
+  const auto& slaveNodes = interface_->slaveNodes();
+  const auto& owned = interface_->ownedSlaveNodes();
+  const double t = thickness_;
+  FrictionalParameters p;
+  p.k = k_;
+  p.epsN = epsN_;
+  p.epsTau = settings_.tangentFactor * epsN_;
+  p.thickness = t;
+  p.slipAugmentation = settings_.slipAugmentation;
+  p.slipThreshold = settings_.slipThreshold;
+  p.law = settings_.friction;
+
+  auto residualAt = [&](long long node) {
+    std::array<double, 3> values{};
+    for (int c = 0; c < dim_; ++c)
+      if (!isPrescribed(node, c)) values[c] = r[map.getLocalElement(dofRow(node, c))];
+    return values;
+  };
+  auto prescribedOf = [&](long long node) { return prescribed_[interface_->interfaceNodeIndex(node)]; };
+
+  // Stage 1: values, the new sets.
+  PairIterationSummary summary;
+  std::string failure;
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    const int s = owned[i];
+    const long long node = slaveNodes[s];
+    const ContactState previous = state_[i];
+    const NodalMortarEntry* entry = mortar_.find(node);
+    ContactState state = ContactState::Inactive;
+    State decided;
+    if (entry != nullptr && entry->D > minimumD_) {
+      const auto w = weightedSlip(*entry, nullptr);
+      decided = decide(dim_, residualAt(node), normals_[s].n, w, entry->D, entry->gap, prescribedOf(node), previous, p);
+      weightedSlip_[i] = w;
+      for (int c = 0; c < 3; ++c) slipIncrement_[i][c] = -w[c] / entry->D;  // the slave relative to the master
+      state = decided.state;
+      if (!updateSet) {
+        if (state != previous) ++summary.violations;
+        state = previous;
+      }
+      if (state == ContactState::Inactive) decided = State{};
+      if (isActive(state) && entry->gap / entry->D < -radius_ && failure.empty()) {
+        std::ostringstream message;
+        message << "Contact/Pairs/" << settings_.name << ": slave node " << node + 1 << " penetrates the master by "
+                << -entry->gap / entry->D << ", more than the search radius " << radius_
+                << ": raise 'Search Radius Factor' or use more load steps";
+        failure = message.str();
+      }
+    }
+    state_[i] = state;
+    lambdaN_[i] = decided.lambdaN;
+    pressure_[i] = -k_ * decided.lambdaN;
+    traction_[i] = decided.traction;
+    countState(summary.activeSet, state, previous);
+  }
+  throwIfAnyRankFailed(*interface_->comm(), failure);
+  differentiateActive();
+
+  // Stage 2: the rows of the active nodes and their derivatives.
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    if (!isActive(state_[i])) continue;
+    const int s = owned[i];
+    const long long node = slaveNodes[s];
+    const NodalMortarEntry* entry = mortarDerivatives_.find(node);
+    if (entry == nullptr) continue;  // cannot happen: the node's faces were differentiated
+    const auto& n = normalDerivatives_[s].n;
+    const auto& dn = normalDerivatives_[s].derivative;
+    std::array<DerivativeRow, 3> dw;
+    const auto w = weightedSlip(*entry, &dw);
+    const auto rf = residualAt(node);
+    const Rows k = rowsOf(dim_, rf, n, w, entry->D, entry->gap, prescribedOf(node), state_[i], p);
+    if (!k.usable) continue;
+
+    // Forces and residual figures: the recovered traction acts on the slave.
+    double tn = 0;
+    for (int c = 0; c < dim_; ++c) tn += k.lambda[c] * n[c];
+    for (int c = 0; c < dim_; ++c) {
+      const double force = k_ * t * entry->D * k.lambda[c];
+      const double normal = k_ * t * entry->D * tn * n[c];
+      summary.slaveForce[c] += force;
+      summary.normalForce[c] += normal;
+      summary.tangentialForce[c] += force - normal;
+      summary.contactForce2 += force * force;
+    }
+
+    // The explicit part of d(row)/dx: through n, w, D and g~ (the r part is tangentTransform).
+    auto explicitRow = [&](const std::array<double, 11>& d, bool withSlipAndGap) {
+      DerivativeRow row;
+      for (const auto& nd : dn)
+        for (int m = 0; m < dim_; ++m)
+          if (d[3 + m] != 0.0) row[{nd.node, nd.component}] += d[3 + m] * nd.dn[m];
+      addScaled(row, entry->dD, d[9]);
+      if (withSlipAndGap) {
+        for (int m = 0; m < dim_; ++m) addScaled(row, dw[m], d[6 + m]);
+        addScaled(row, entry->dGap, d[10]);
+      }
+      return row;
+    };
+    auto emit = [&](GlobalOrdinal target, const DerivativeRow& row, double scale) {
+      for (const auto& [key, value] : row)
+        if (value != 0.0 && !isPrescribed(key.first, key.second))
+          out.constraint.push_back({target, dofRow(key.first, key.second), scale * value});
+    };
+
+    // Slave rows: the bulk row is replaced (T - I = -1), the value goes to g.
+    for (int c = 0; c < dim_; ++c) {
+      if (isPrescribed(node, c)) continue;
+      const GlobalOrdinal target = dofRow(node, c);
+      out.transform.push_back({target, target, -1.0});
+      out.constraintResidual.push_back({target, k.rows[c]});
+      for (int m = 0; m < dim_; ++m)
+        if (!isPrescribed(node, m) && k.dRows[c][m] != 0.0)
+          out.tangentTransform.push_back({target, dofRow(node, m), k.dRows[c][m]});
+      emit(target, explicitRow(k.dRows[c], true), 1.0);
+    }
+    // Tangential rows for the (4.78) groups: every free slot but the gap row's.
+    {
+      double gapRow2 = 0, all2 = 0;
+      double largest = -1;
+      int gapSlot = -1;
+      for (int c = 0; c < dim_; ++c)
+        if (!isPrescribed(node, c) && std::abs(n[c]) > largest) {
+          largest = std::abs(n[c]);
+          gapSlot = c;
+        }
+      for (int c = 0; c < dim_; ++c) {
+        if (isPrescribed(node, c)) continue;
+        if (c == gapSlot) gapRow2 += k.rows[c] * k.rows[c];
+        else all2 += k.rows[c] * k.rows[c];
+      }
+      summary.normalResidual2 += gapRow2;
+      (state_[i] == ContactState::Stick ? summary.stickResidual2 : summary.slipResidual2) += all2;
+    }
+    // Master rows: + k t M_jl lambda_j (the recovered force, acting on the master as -f).
+    for (const auto& [master, Mjl] : entry->M)
+      for (int c = 0; c < dim_; ++c) {
+        if (isPrescribed(master, c)) continue;
+        const GlobalOrdinal target = dofRow(master, c);
+        const double kt = k_ * t;
+        out.constraintResidual.push_back({target, kt * Mjl * k.lambda[c]});
+        for (int m = 0; m < dim_; ++m)
+          if (!isPrescribed(node, m) && k.dLambda[c][m] != 0.0)
+            out.tangentTransform.push_back({target, dofRow(node, m), kt * Mjl * k.dLambda[c][m]});
+        DerivativeRow row = explicitRow(k.dLambda[c], false);
+        for (auto& [key, value] : row) value *= Mjl;
+        const auto dM = entry->dM.find(master);
+        if (dM != entry->dM.end()) addScaled(row, dM->second, k.lambda[c]);
+        emit(target, row, kt);
+      }
+  }
+  reduceSummary(summary);
+  return summary;
+}
+
+}  // namespace coulomb::contact

@@ -1,0 +1,17 @@
+#include "coulomb/contact/FrictionLaw.hpp"
+
+namespace coulomb::contact {
+
+const char* toString(FrictionLawType type) {
+  switch (type) {
+    case FrictionLawType::None:
+      return "None";
+    case FrictionLawType::Coulomb:
+      return "Coulomb";
+    case FrictionLawType::Tresca:
+      return "Tresca";
+  }
+  return "Unknown";
+}
+
+}  // namespace coulomb::contact

@@ -1,0 +1,111 @@
+#pragma once
+/// @file FrictionalNode.hpp
+/// @brief Kernel: the condensed rows of one active frictional slave node j
+/// (ALM, vector multiplier condensed out; seed 4.62, 4.72b, 4.75-4.77, 4.79)
+/// and its stick/slip decision. Fixed-size arrays, no Tpetra, no MPI.
+///
+/// Condensation (docs/architecture.md, "Frictional contact"): with the dual
+/// basis D is diagonal, so the slave node's free displacement rows determine
+/// its multiplier from the bulk residual r (f_int - f_ext, no contact force):
+///   k t D lambda_F = r_F,
+/// in the frame of CondensationFrame (a = n_F/|n_F|, tangents b_s):
+///   lambda_n = a.r_F / (k t D |n_F|),   beta_s = b_s.r_F / (k t D),
+///   lambda   = lambda_n n + sum_s beta_s b_s.
+/// The node's free rows are then replaced by its contact conditions:
+///   gap slot        : sign eps_n t g~                       (as frictionless)
+///   tangent slot s  : stick  eps_n t (b_s . w)              (no slip, 4.72b st)
+///                     slip   b_s.r_F - t D Θ d_s            (traction on the cone, 4.72b sl)
+/// with w the weighted slip increment (seed sign of 4.69b: the motion of the
+/// master relative to the slave, D × length), Θ the friction law's
+/// threshold at lambdā_n = k lambda_n + eps_n g~ / D, and d the unit
+/// direction of the augmented tangential multiplier
+///   lambdā_tau = k beta + alpha eps_tau (b.w) / D      (alpha: slip augmentation),
+/// so that at a slip solution k beta = Θ d and w ∥ d with a positive factor:
+/// the traction on the slave drags it along with the master, i.e. opposes
+/// its slip (the semi-smooth Newton form of the NCP 4.79). alpha > 0 makes
+/// the slip direction a Newton unknown in 3D (alpha = 0 leaves it free).
+/// The stick rows use the gap rows' scale eps_n t, not eps_tau: they are
+/// conditions w = 0 whose scale only affects the conditioning; eps_tau
+/// (= kappa eps_n) enters the stick/slip decision and the slip direction.
+/// The master rows receive the recovered force k t M_jl lambda (the caller).
+///
+/// Inputs of the derivatives, in this order: r (dim), n (dim), w (dim), D, g~.
+#include <array>
+
+#include "coulomb/contact/ActiveSet.hpp"
+#include "coulomb/contact/FrictionLaw.hpp"
+
+namespace coulomb::contact {
+
+/// @brief Parameters of a frictional ALM pair.
+struct FrictionalParameters {
+  double k = 1.0;                  ///< ALM scale factor
+  double epsN = 1.0;               ///< normal penalty eps_n [pressure/length]
+  double epsTau = 1.0;             ///< tangential penalty eps_tau = kappa eps_n
+  double thickness = 1.0;          ///< t (2D thickness, 1 in 3D)
+  double slipAugmentation = 1.0;   ///< alpha > 0
+  double slipThreshold = 0.02;     ///< hysteresis of the slip -> stick transition (stickSlipState)
+  FrictionLaw law;
+};
+
+/// Number of inputs of the derivatives: r, n, w (dim each), D, g~.
+template <int dim>
+inline constexpr int kFrictionalInputs = 3 * dim + 2;
+
+/// @brief One slave node's data (values).
+template <int dim>
+struct FrictionalNodeInput {
+  std::array<double, dim> residual{};  ///< bulk residual r_j at the node [force]
+  std::array<double, dim> normal{};    ///< unit nodal normal n_j
+  std::array<double, dim> slip{};      ///< weighted slip increment w_j (seed sign)
+  double D = 0.0;                      ///< D_j > 0
+  double gap = 0.0;                    ///< weighted gap g~_j
+  std::array<bool, dim> prescribed{};  ///< Dirichlet components of the node
+};
+
+/// @brief The nodal quantities of the state decision and the output.
+template <int dim>
+struct FrictionalNodeState {
+  ContactState state = ContactState::Inactive;
+  double lambdaN = 0.0;          ///< recovered normal multiplier (0 unless recovered)
+  double augmentedNormal = 0.0;  ///< lambdā_n
+  double threshold = 0.0;        ///< Θ(lambdā_n)
+  double tangentNorm = 0.0;      ///< |lambdā_tau| used by the rule
+  std::array<double, dim> traction{};  ///< recovered contact traction on the slave, k lambda
+};
+
+/// @brief The update rule (4.73-4.77) for node `in` whose state at the
+/// previous iterate was `previous`. The multiplier is recovered from the
+/// residual only when `previous` is active (otherwise the node's rows held
+/// plain equilibrium and lambda = 0); a node that closes starts as Stick
+/// (the stick guess of Algorithm 3). A node whose free components hardly
+/// see its normal (CondensationFrame::usable false) stays Inactive.
+template <int dim>
+FrictionalNodeState<dim> frictionalState(const FrictionalNodeInput<dim>& in, ContactState previous,
+                                         const FrictionalParameters& p);
+
+/// @brief The condensed rows of an active node (state Active = slip, or
+/// Stick) and the recovered multiplier, with derivatives.
+template <int dim>
+struct FrictionalNodeRows {
+  bool usable = false;
+  std::array<double, dim> rows{};  ///< row value per component slot (prescribed slots: 0)
+  std::array<double, dim> lambda{};  ///< recovered multiplier lambda_j (traction / k)
+  /// d rows[c] / d input[i], d lambda[c] / d input[i]; inputs ordered r, n, w, D, g~.
+  std::array<std::array<double, kFrictionalInputs<dim>>, dim> dRows{}, dLambda{};
+};
+
+template <int dim>
+FrictionalNodeRows<dim> frictionalRows(const FrictionalNodeInput<dim>& in, ContactState state,
+                                       const FrictionalParameters& p);
+
+#define COULOMB_FRICTIONAL_NODE_EXTERN(DIM)                                                                  \
+  extern template FrictionalNodeState<DIM> frictionalState<DIM>(const FrictionalNodeInput<DIM>&, ContactState, \
+                                                                const FrictionalParameters&);                \
+  extern template FrictionalNodeRows<DIM> frictionalRows<DIM>(const FrictionalNodeInput<DIM>&, ContactState,  \
+                                                              const FrictionalParameters&);
+COULOMB_FRICTIONAL_NODE_EXTERN(2)
+COULOMB_FRICTIONAL_NODE_EXTERN(3)
+#undef COULOMB_FRICTIONAL_NODE_EXTERN
+
+}  // namespace coulomb::contact

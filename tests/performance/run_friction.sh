@@ -1,0 +1,118 @@
+#!/usr/bin/env bash
+# Friction (sliding punch) benchmark matrix through scripts/bench:
+#   friction r1 and r2 at np 1, friction r1 at np 2 (--quick: r1 at np 1 only).
+# Prints the JSON lines (also appended to <runs-dir>/friction_summary.jsonl),
+# then a table.
+#
+#   tests/performance/run_friction.sh [--runs-dir DIR] [--wait-idle SEC] [--timeout SEC]
+#                                     [--quick] [--calculix] [--frictionless]
+#     --calculix      also run the CalculiX peer harness (LINMORTAR, mu 0.3) for
+#                     every np 1 run (same as CALCULIX=1 in the environment);
+#                     only if /usr/bin/ccx exists. The CalculiX runs go to
+#                     <run dir>/calculix, never into ../shared.
+#     --frictionless  run the deck without its friction law (scripts/bench
+#                     --frictionless: Q ~ 0; checks the pipeline, and a reference)
+#     --wait-idle SEC before each run wait up to SEC s for an idle machine
+#                     (default 60; 0 = no wait). Runs during which other
+#                     processes used > max(0.3 s, 10 % of the wall time) of CPU
+#                     are marked "*" (disturbed).
+#     --timeout SEC   per run, Coulomb and CalculiX each (default 1800)
+# Environment: COULOMB_BENCH_MESHES, COULOMB_BUILD_DIR, COULOMB_EXE (see scripts/bench), CALCULIX=1.
+# Build first: cmake -S . -B build && cmake --build build -j2
+set -uo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+bench="$here/scripts/bench"
+runs="${COULOMB_BUILD_DIR:-$here/build}/bench-runs"
+wait_idle=60
+timeout=1800
+quick=0
+calculix="${CALCULIX:-0}"
+extra=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --runs-dir) runs="$(realpath -m "$2")"; shift 2 ;;
+    --wait-idle) wait_idle="$2"; shift 2 ;;
+    --timeout) timeout="$2"; shift 2 ;;
+    --quick) quick=1; shift ;;
+    --calculix) calculix=1; shift ;;
+    --frictionless) extra+=(--frictionless); shift ;;
+    -h|--help) sed -n '2,23p' "$0"; exit 0 ;;
+    *) echo "run_friction.sh: unknown argument '$1'" >&2; exit 2 ;;
+  esac
+done
+ccx=()
+if [ "$calculix" = 1 ]; then
+  if [ -x /usr/bin/ccx ]; then ccx=(--calculix); else echo "run_friction.sh: /usr/bin/ccx missing, no CalculiX runs" >&2; fi
+fi
+mkdir -p "$runs"
+summary="$runs/friction_summary.jsonl"
+lines=()
+failed=0
+
+run() {  # ref np [--calculix]
+  echo "run_friction: friction --ref $1 --np $2 ${extra[*]:-} ${3:-}" >&2
+  local line
+  line="$("$bench" friction --ref "$1" --np "$2" --runs-dir "$runs" --wait-idle "$wait_idle" \
+    --timeout "$timeout" "${extra[@]}" ${3:+"$3"})" || failed=1
+  lines+=("$line")
+  printf '%s\n' "$line" >>"$summary"
+  printf '%s\n' "$line"
+}
+
+run 1 1 "${ccx[@]}"
+if [ "$quick" = 0 ]; then
+  run 2 1 "${ccx[@]}"
+  run 1 2
+fi
+
+echo
+printf '%s\n' "${lines[@]}" | /usr/bin/python3 -c '
+import json, sys
+rows = []
+for l in sys.stdin:
+    try: rows.append(json.loads(l))
+    except ValueError: pass
+def ccx(r, key):
+    c = r.get("calculix") or {}
+    return c.get(key)
+def slip(r):
+    s, a = r.get("slipping_slave_nodes_end"), r.get("active_slave_nodes_end")
+    return None if s is None and a is None else f"{s if s is not None else chr(45)}/{a if a is not None else chr(45)}"
+cols = [("ref", lambda r: r.get("ref"), "{}"), ("np", lambda r: r.get("np"), "{}"),
+        ("mu", lambda r: "0 (frictionless)" if r.get("frictionless") else r.get("mu"), "{}"),
+        ("status", lambda r: r.get("status"), "{}"),
+        ("dofs", lambda r: r.get("dofs"), "{}"), ("inc", lambda r: r.get("increments"), "{}"),
+        ("Newton", lambda r: r.get("newton_iterations"), "{}"),
+        ("its/inc max", lambda r: r.get("newton_per_increment_max"), "{}"),
+        ("lin.it", lambda r: r.get("linear_iterations"), "{}"),
+        ("s/Newton", lambda r: r.get("time_per_newton_s"), "{:.3f}"),
+        ("contact s", lambda r: r.get("contact_s"), "{:.2f}"),
+        ("wall s", lambda r: r.get("wall_s"), "{:.2f}"), ("RSS MB", lambda r: r.get("max_rss_mb"), "{:.0f}"),
+        ("P end", lambda r: r.get("P_end"), "{:.1f}"),
+        ("Q/P end", lambda r: r.get("Q_over_P_end"), "{:.4f}"),
+        ("Q/muP end", lambda r: r.get("Q_over_muP_end"), "{:.4f}"),
+        ("gross slip ux", lambda r: r.get("gross_slip_from_ux"), "{:.4g}"),
+        ("Q/P sliding", lambda r: r.get("Q_over_P_sliding_mean"), "{:.4f}"),
+        ("slip/active", slip, "{}"),
+        ("ccx Newton", lambda r: ccx(r, "newton_iterations"), "{}"),
+        ("ccx wall s", lambda r: ccx(r, "wall_s"), "{:.2f}"),
+        ("ccx/coulomb time", lambda r: r.get("time_ratio_calculix_over_coulomb"), "{:.2f}"),
+        ("ccx P end", lambda r: ccx(r, "P_end"), "{:.1f}"),
+        ("ccx Q/P end", lambda r: ccx(r, "Q_over_P_end"), "{:.4f}"),
+        ("ccx gross slip ux", lambda r: ccx(r, "gross_slip_from_ux"), "{:.4g}")]
+def cell(r, get, fmt, name):
+    v = get(r)
+    if v is None: return "-"
+    try: s = fmt.format(v)
+    except (ValueError, TypeError): s = str(v)
+    if name == "wall s" and r.get("disturbed"): s += "*"
+    if name == "ccx wall s" and ccx(r, "status") not in (None, "ok"): s += " (" + str(ccx(r, "status")) + ")"
+    return s
+table = [[c[0] for c in cols]] + [[cell(r, g, f, n) for n, g, f in cols] for r in rows]
+w = [max(len(t[i]) for t in table) for i in range(len(cols))]
+print("friction (sliding punch), * = disturbed: other processes used > max(0.3 s, 10 % of the wall time) of CPU")
+for j, t in enumerate(table):
+    print("  ".join(s.rjust(w[i]) for i, s in enumerate(t)))
+    if j == 0: print("  ".join("-" * x for x in w))
+'
+exit "$failed"

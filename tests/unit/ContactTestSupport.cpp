@@ -1,0 +1,53 @@
+#include "ContactTestSupport.hpp"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+namespace coulomb::test {
+
+std::string deckPath(const std::string& name) { return std::string(COULOMB_SOURCE_DIR) + "/xml/" + name + ".xml"; }
+
+ShippedDeck::ShippedDeck(const std::string& name, const std::string& mesh) {
+  std::ifstream in(deckPath(name));
+  std::stringstream content;
+  content << in.rdbuf();
+  text = content.str();
+  replace("../exodus_meshes/" + mesh, shippedMesh(mesh));
+}
+
+void ShippedDeck::replace(const std::string& from, const std::string& to) {
+  const auto at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+}
+
+namespace {
+ContactRun runFile(const std::string& deck, const std::string& output) {
+  ContactRun run;
+  run.simulation = std::make_unique<solver::Simulation>(deck, worldComm(), nullptr, output);
+  run.summary = run.simulation->run();
+  if (worldComm()->getRank() == 0) run.results = io::readExodusResults(output);
+  return run;
+}
+}  // namespace
+
+ContactRun runDeck(const std::string& name) {
+  return runFile(deckPath(name), scratchDirectory("contact_" + name) + "/" + name + ".e");
+}
+
+ContactRun runDeckText(const std::string& name, const std::string& text) {
+  const std::string dir = scratchDirectory(name);
+  writeOnRoot(dir + "/deck.xml", text);
+  return runFile(dir + "/deck.xml", dir + "/result.e");
+}
+
+double lastGlobal(const io::ExodusResults& r, const std::string& name) {
+  return r.global.back()[r.globalIndex(name)];
+}
+const std::vector<double>& lastNodal(const io::ExodusResults& r, const std::string& name) {
+  return r.nodal.back()[r.nodalIndex(name)];
+}
+
+}  // namespace coulomb::test

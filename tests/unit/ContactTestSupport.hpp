@@ -1,0 +1,40 @@
+#pragma once
+// Helpers of the contact deck tests (MPI): shipped decks edited as text,
+// runs with their Exodus results on rank 0.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "TestSupport.hpp"
+#include "coulomb/io/ExodusResults.hpp"
+#include "coulomb/solver/Simulation.hpp"
+
+namespace coulomb::test {
+
+/// Path of a shipped deck xml/<name>.xml.
+std::string deckPath(const std::string& name);
+
+/// The text of a shipped deck with its mesh path made absolute, to be edited.
+struct ShippedDeck {
+  std::string text;
+  ShippedDeck(const std::string& name, const std::string& mesh);
+  /// Replaces the first occurrence of `from` (which must be there: a failed
+  /// test assertion otherwise).
+  void replace(const std::string& from, const std::string& to);
+};
+
+struct ContactRun {
+  std::unique_ptr<solver::Simulation> simulation;
+  solver::RunSummary summary;
+  io::ExodusResults results;  ///< rank 0 only
+};
+
+/// Runs a shipped deck (results in a scratch folder).
+ContactRun runDeck(const std::string& name);
+/// Runs the deck text `text` written to <scratch name>/deck.xml.
+ContactRun runDeckText(const std::string& name, const std::string& text);
+
+double lastGlobal(const io::ExodusResults& r, const std::string& name);
+const std::vector<double>& lastNodal(const io::ExodusResults& r, const std::string& name);
+
+}  // namespace coulomb::test

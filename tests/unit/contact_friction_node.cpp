@@ -1,0 +1,206 @@
+/// Unit tests of the frictional kernels: the friction laws (FrictionLaw.hpp),
+/// the stick/slip rule with hysteresis (ActiveSet.hpp) and the condensed
+/// rows of a frictional node with their Sacado derivatives (FrictionalNode.hpp),
+/// checked against central differences and against constructed solutions.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "coulomb/contact/FrictionalNode.hpp"
+#include "coulomb/core/Error.hpp"
+
+using namespace coulomb::contact;
+
+namespace {
+
+FrictionalParameters coulombParameters(double mu) {
+  FrictionalParameters p;
+  p.k = 2.0;
+  p.epsN = 50.0;
+  p.epsTau = 5.0;
+  p.thickness = 1.5;
+  p.slipAugmentation = 0.7;
+  p.law.type = FrictionLawType::Coulomb;
+  p.law.coefficient = mu;
+  return p;
+}
+
+template <int dim>
+std::array<double, dim> unit(std::array<double, dim> v) {
+  double n = 0;
+  for (double x : v) n += x * x;
+  for (double& x : v) x /= std::sqrt(n);
+  return v;
+}
+
+/// A generic node: tilted normal, residual with normal and tangential parts.
+template <int dim>
+FrictionalNodeInput<dim> genericNode() {
+  FrictionalNodeInput<dim> in;
+  if constexpr (dim == 2) {
+    in.normal = unit<2>({0.3, -1.0});
+    in.residual = {0.8, 2.1};
+    in.slip = {0.05, -0.02};
+  } else {
+    in.normal = unit<3>({0.2, -0.1, -1.0});
+    in.residual = {0.8, -0.4, 2.1};
+    in.slip = {0.05, 0.03, -0.02};
+  }
+  in.D = 0.4;
+  in.gap = -0.01;
+  return in;
+}
+
+/// Central differences of rows and lambda with respect to input i.
+template <int dim>
+void checkDerivatives(const FrictionalNodeInput<dim>& base, ContactState state, const FrictionalParameters& p) {
+  const auto exact = frictionalRows<dim>(base, state, p);
+  ASSERT_TRUE(exact.usable);
+  const double h = 1e-6;
+  for (int i = 0; i < kFrictionalInputs<dim>; ++i) {
+    auto perturbed = [&](double delta) {
+      FrictionalNodeInput<dim> in = base;
+      if (i < dim) in.residual[i] += delta;
+      else if (i < 2 * dim) in.normal[i - dim] += delta;  // n as a free input (the caller chains dn/du)
+      else if (i < 3 * dim) in.slip[i - 2 * dim] += delta;
+      else if (i == 3 * dim) in.D += delta;
+      else in.gap += delta;
+      return frictionalRows<dim>(in, state, p);
+    };
+    const auto plus = perturbed(h), minus = perturbed(-h);
+    for (int c = 0; c < dim; ++c) {
+      const double fdRow = (plus.rows[c] - minus.rows[c]) / (2 * h);
+      const double fdLambda = (plus.lambda[c] - minus.lambda[c]) / (2 * h);
+      const double scaleRow = 1.0 + std::abs(exact.dRows[c][i]);
+      const double scaleLambda = 1.0 + std::abs(exact.dLambda[c][i]);
+      EXPECT_NEAR(exact.dRows[c][i], fdRow, 1e-6 * scaleRow) << "row " << c << " input " << i;
+      EXPECT_NEAR(exact.dLambda[c][i], fdLambda, 1e-6 * scaleLambda) << "lambda " << c << " input " << i;
+    }
+  }
+}
+
+}  // namespace
+
+TEST(FrictionLaw, CoulombTrescaNone) {
+  FrictionLaw coulomb{FrictionLawType::Coulomb, 0.3, 0.0};
+  EXPECT_DOUBLE_EQ(frictionThreshold(coulomb, -10.0), 3.0);  // mu <-lambdā_n>
+  EXPECT_DOUBLE_EQ(frictionThreshold(coulomb, 2.0), 0.0);    // open: no friction
+  FrictionLaw tresca{FrictionLawType::Tresca, 0.0, 7.0};
+  EXPECT_DOUBLE_EQ(frictionThreshold(tresca, -10.0), 7.0);  // independent of the pressure
+  EXPECT_DOUBLE_EQ(frictionThreshold(tresca, -1000.0), 7.0);
+  EXPECT_DOUBLE_EQ(frictionThreshold(FrictionLaw{}, -10.0), 0.0);
+  EXPECT_TRUE(FrictionLaw{}.pureSlip());
+  EXPECT_TRUE((FrictionLaw{FrictionLawType::Coulomb, 0.0, 0.0}.pureSlip()));
+  EXPECT_FALSE(coulomb.pureSlip());
+  EXPECT_FALSE(tresca.pureSlip());
+  EXPECT_STREQ(toString(FrictionLawType::Tresca), "Tresca");
+}
+
+TEST(FrictionLaw, StickSlipRuleWithHysteresis) {
+  const double threshold = 10.0, hysteresis = 0.02;
+  EXPECT_EQ(stickSlipState(9.9, threshold, ContactState::Stick, hysteresis), ContactState::Stick);
+  EXPECT_EQ(stickSlipState(10.1, threshold, ContactState::Stick, hysteresis), kSlip);
+  EXPECT_EQ(stickSlipState(9.9, threshold, ContactState::Inactive, hysteresis), ContactState::Stick);
+  // A slipping node keeps slipping down to (1 - 0.02) x 10 = 9.8.
+  EXPECT_EQ(stickSlipState(9.9, threshold, kSlip, hysteresis), kSlip);
+  EXPECT_EQ(stickSlipState(9.7, threshold, kSlip, hysteresis), ContactState::Stick);
+  // Zero threshold: always slip (pure slip).
+  EXPECT_EQ(stickSlipState(0.0, 0.0, ContactState::Stick, hysteresis), kSlip);
+  EXPECT_TRUE(isActive(ContactState::Stick));
+  EXPECT_TRUE(isActive(kSlip));
+  EXPECT_FALSE(isActive(ContactState::Inactive));
+  EXPECT_EQ(static_cast<int>(ContactState::Stick), 2);
+}
+
+TEST(FrictionalNode, DerivativesMatchCentralDifferences) {
+  const auto p = coulombParameters(0.3);
+  for (ContactState state : {ContactState::Stick, kSlip}) {
+    checkDerivatives<2>(genericNode<2>(), state, p);
+    checkDerivatives<3>(genericNode<3>(), state, p);
+    // A node on a symmetry plane (u_y prescribed), as in the sliding punch.
+    auto onPlane = genericNode<3>();
+    onPlane.prescribed = {false, true, false};
+    checkDerivatives<3>(onPlane, state, p);
+  }
+  auto tresca = p;
+  tresca.law = FrictionLaw{FrictionLawType::Tresca, 0.0, 1.3};
+  checkDerivatives<3>(genericNode<3>(), kSlip, tresca);
+}
+
+TEST(FrictionalNode, RecoversTheMultiplierFromTheResidual) {
+  const auto p = coulombParameters(0.3);
+  auto in = genericNode<3>();
+  const std::array<double, 3> lambda{0.4, -0.3, 1.1};
+  for (int c = 0; c < 3; ++c) in.residual[c] = p.k * p.thickness * in.D * lambda[c];
+  const auto rows = frictionalRows<3>(in, ContactState::Stick, p);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(rows.lambda[c], lambda[c], 1e-14);
+  const auto state = frictionalState<3>(in, ContactState::Stick, p);
+  double ln = 0;
+  for (int c = 0; c < 3; ++c) ln += lambda[c] * in.normal[c];
+  EXPECT_NEAR(state.lambdaN, ln, 1e-14);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(state.traction[c], p.k * lambda[c], 1e-14);
+  // Not previously active: nothing is recovered.
+  const auto fresh = frictionalState<3>(in, ContactState::Inactive, p);
+  EXPECT_EQ(fresh.lambdaN, 0.0);
+}
+
+/// A node at a slip solution of the Coulomb law: closed (g~ = 0), traction
+/// on the cone along the weighted slip. Its rows vanish; so do those of a
+/// stick solution (w = 0).
+TEST(FrictionalNode, RowsVanishAtSolutions) {
+  const auto p = coulombParameters(0.4);
+  FrictionalNodeInput<3> in;
+  in.normal = unit<3>({0.1, 0.2, -1.0});
+  in.D = 0.3;
+  in.gap = 0.0;
+  // Tangent t ⟂ n, pressure 5: traction = -5 n + 0.4 × 5 t on the slave.
+  std::array<double, 3> t = {1.0, 0.0, 0.0};
+  double tn = 0;
+  for (int c = 0; c < 3; ++c) tn += t[c] * in.normal[c];
+  for (int c = 0; c < 3; ++c) t[c] -= tn * in.normal[c];
+  t = unit<3>(t);
+  const double pressure = 5.0;
+  for (int c = 0; c < 3; ++c) {
+    const double traction = -pressure * in.normal[c] + 0.4 * pressure * t[c];
+    in.residual[c] = p.thickness * in.D * traction;  // k t D lambda = t D × traction
+    in.slip[c] = 0.02 * t[c];                        // the master moves along t relative to the slave
+  }
+  const auto slip = frictionalRows<3>(in, kSlip, p);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(slip.rows[c], 0.0, 1e-12) << c;
+  const auto decided = frictionalState<3>(in, kSlip, p);
+  EXPECT_EQ(decided.state, kSlip);
+  EXPECT_NEAR(decided.threshold, 0.4 * pressure, 1e-12);
+  // Slip against the traction is not a solution: the rule sends the node to
+  // stick (|lambdā_tau| = 2 - alpha eps_tau 0.02 / D < Θ = 2), whose rows
+  // then ask for zero slip.
+  auto wrong = in;
+  for (int c = 0; c < 3; ++c) wrong.slip[c] = -in.slip[c];
+  EXPECT_EQ(frictionalState<3>(wrong, kSlip, p).state, ContactState::Stick);
+  const auto wrongRows = frictionalRows<3>(wrong, ContactState::Stick, p);
+  double norm = 0;
+  for (double r : wrongRows.rows) norm += r * r;
+  EXPECT_NEAR(std::sqrt(norm), p.epsN * p.thickness * 0.02, 1e-12);
+  // Stick: no slip, traction inside the cone.
+  auto stick = in;
+  stick.slip = {};
+  for (int c = 0; c < 3; ++c) stick.residual[c] = p.thickness * in.D * (-pressure * in.normal[c] + 0.1 * t[c]);
+  const auto stickRows = frictionalRows<3>(stick, ContactState::Stick, p);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(stickRows.rows[c], 0.0, 1e-12) << c;
+  EXPECT_EQ(frictionalState<3>(stick, ContactState::Stick, p).state, ContactState::Stick);
+  // Open node: inactive whatever the tangential load.
+  auto open = in;
+  open.gap = 1.0;
+  open.residual = {};
+  EXPECT_EQ(frictionalState<3>(open, ContactState::Inactive, p).state, ContactState::Inactive);
+}
+
+TEST(FrictionalNode, RejectsBadInput) {
+  auto p = coulombParameters(0.3);
+  auto in = genericNode<2>();
+  in.D = 0.0;
+  EXPECT_THROW(frictionalRows<2>(in, kSlip, p), coulomb::Error);
+  in = genericNode<2>();
+  p.slipAugmentation = 0.0;
+  EXPECT_THROW(frictionalState<2>(in, kSlip, p), coulomb::Error);
+  EXPECT_THROW(frictionalRows<2>(in, ContactState::Inactive, coulombParameters(0.3)), coulomb::Error);
+}
