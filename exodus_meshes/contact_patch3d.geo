@@ -48,3 +48,4 @@ Physical Surface("slave", 5) = {101};           // punch bottom, z = 0.5
 Physical Surface("top", 6) = {punch[0]};      // z = 1
 Physical Surface("left", 7) = {base[5], punch[5]};   // x = 0
 Physical Surface("front", 8) = {base[2], punch[2]};  // y = 0
+Physical Surface("right", 9) = {base[3], punch[3]};  // x = 1 (the frictional patch tests load it)

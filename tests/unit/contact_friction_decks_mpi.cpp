@@ -49,16 +49,18 @@ struct ActiveNodes {
 /// component: the normals tilt slightly where the punch ends deform)
 /// against `expected(pressure)`.
 template <class Expected>
-ActiveNodes checkTractions(const io::ExodusResults& r, Expected expected, double tolerance) {
+ActiveNodes checkTractions(const io::ExodusResults& r, Expected expected, double tolerance, int dim = 2) {
   const auto& state = lastNodal(r, "contact_state");
   const auto& pressure = lastNodal(r, "contact_pressure");
   const auto& tx = lastNodal(r, "contact_tangential_traction_x");
   const auto& ty = lastNodal(r, "contact_tangential_traction_y");
+  const auto* tz = dim == 3 ? &lastNodal(r, "contact_tangential_traction_z") : nullptr;
   ActiveNodes nodes;
   for (std::size_t i = 0; i < state.size(); ++i) {
     if (state[i] < 0.5) continue;
     (state[i] > 1.5 ? nodes.stick : nodes.slip)++;
-    const double traction = std::copysign(std::hypot(tx[i], ty[i]), tx[i]);
+    const double magnitude = std::sqrt(tx[i] * tx[i] + ty[i] * ty[i] + (tz ? (*tz)[i] * (*tz)[i] : 0.0));
+    const double traction = std::copysign(magnitude, tx[i]);
     EXPECT_NEAR(traction, expected(pressure[i]), tolerance) << "node " << i + 1 << " pressure " << pressure[i];
   }
   return nodes;
@@ -127,6 +129,37 @@ TEST(FrictionPatch, TrescaSaturatesAtTheThreshold) {
   const auto& pressure = lastNodal(run.results, "contact_pressure");
   const auto range = std::minmax_element(pressure.begin(), pressure.end());
   EXPECT_GT(*range.second - *range.first, 1.0);
+}
+
+// 3D (xml/friction_patch_3d.xml): stick with tau = mu p / 2 is exact
+// across the non-matching HEX8 interface; the imposed slip along x carries
+// mu p against the slip at every node.
+TEST(FrictionPatch, ThreeDimensionalStickIsExactAndSlipCarriesMuP) {
+  const double p = kE * 0.01, tau = kMu * p / 2, gamma = tau / kShearModulus, s = 0.002;
+  ShippedDeck stickDeck("friction_patch_3d", "contact_patch3d.e");
+  stickDeck.replace("<Parameter name=\"Value\" type=\"double\" value=\"0.002\"/>", "");
+  stickDeck.replace("0.0078000000000000005", "0.0039000000000000003");
+  stickDeck.replace("-630.0}", "-315.0}");
+  stickDeck.replace("630.0}", "315.0}");
+  auto stick = runDeckText("friction_patch_3d_stick", stickDeck.text);
+  double error = 0;
+  forOwnedNodes(*stick.simulation, [&](long long, const double* X, const double* u) {
+    error = std::max({error, std::abs(u[0] - (0.003 * X[0] + gamma * X[2])), std::abs(u[1] - 0.003 * X[1]),
+                      std::abs(u[2] + 0.01 * X[2])});
+  });
+  EXPECT_LT(globalMax(error), 1e-9 * 0.01);
+  auto slip = runDeck("friction_patch_3d");
+  if (worldComm()->getRank() != 0) return;
+  const double area = (1 + 0.003) * (1 + 0.003);  // tractions per current area
+  const auto stuck = checkTractions(stick.results, [&](double) { return -tau / area; }, 1e-8 * p, 3);
+  EXPECT_EQ(stuck.stick, 25);
+  EXPECT_NEAR(lastGlobal(stick.results, "contact_force_punch_x"), -tau, 1e-8 * p);
+  const auto slipping = checkTractions(slip.results, [](double pressure) { return -kMu * pressure; }, 1e-8 * p, 3);
+  EXPECT_EQ(slipping.slip, 25);
+  const auto& slipX = lastNodal(slip.results, "contact_slip_x");
+  const auto& state = lastNodal(slip.results, "contact_state");
+  for (std::size_t i = 0; i < state.size(); ++i)
+    if (state[i] > 0.5) EXPECT_GT(slipX[i], 0.5 * s) << "node " << i + 1;
 }
 
 // Sliding punch (the peer benchmark's friction case, coarse shipped mesh):
