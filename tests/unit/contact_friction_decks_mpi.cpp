@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "ContactTestSupport.hpp"
 #include "TestSupport.hpp"
@@ -129,6 +130,61 @@ TEST(FrictionPatch, TrescaSaturatesAtTheThreshold) {
   const auto& pressure = lastNodal(run.results, "contact_pressure");
   const auto range = std::minmax_element(pressure.begin(), pressure.end());
   EXPECT_GT(*range.second - *range.first, 1.0);
+}
+
+// Cattaneo-Mindlin partial slip (xml/cattaneo_mindlin_2d.xml): at every
+// sheared step the stick zone |x| < c of the nodes brackets the analytic
+// c = a (1 - Q / (mu P))^(1/2), a the Hertz half-width at the measured P:
+// the half-width of the stick nodes' zone is at most c and that of the
+// first slip nodes at least c, up to a tenth of the node spacing.
+TEST(FrictionCattaneoMindlin, StickZoneFollowsTheory) {
+  auto run = runDeck("cattaneo_mindlin_2d");
+  EXPECT_EQ(run.summary.cutbacks, 0);
+  if (worldComm()->getRank() != 0) return;
+  const auto& r = run.results;
+  const auto& coordinates = run.simulation->mesh().global().coordinates;
+  const double Es = kE / (2 * (1 - kNu * kNu)), R = 10, pi = std::acos(-1.0);
+  int measured = 0;
+  for (std::size_t s = 5; s < r.global.size(); ++s) {
+    const double Q = std::abs(r.global[s][r.globalIndex("reaction_top_x")]);
+    const double P = std::abs(r.global[s][r.globalIndex("reaction_top_y")]);
+    const double a = std::sqrt(4 * P * R / (pi * Es));
+    const double c = a * std::sqrt(1 - Q / (kMu * P));
+    const auto& state = r.nodal[s][r.nodalIndex("contact_state")];
+    // The stick zone [left, right] of the nodes and the nearest slip nodes
+    // outside it on each side: the half-widths (right - left) / 2 of the two
+    // bracket c.
+    double left = 1e30, right = -1e30;
+    for (std::size_t i = 0; i < state.size(); ++i)
+      if (state[i] > 1.5) left = std::min(left, coordinates[2 * i]), right = std::max(right, coordinates[2 * i]);
+    double slipLeft = -1e30, slipRight = 1e30;
+    for (std::size_t i = 0; i < state.size(); ++i) {
+      if (state[i] < 0.5 || state[i] > 1.5) continue;
+      const double x = coordinates[2 * i];
+      if (x > right) slipRight = std::min(slipRight, x);
+      if (x < left) slipLeft = std::max(slipLeft, x);
+    }
+    ASSERT_LT(left, right) << "step " << s + 1 << ": no stick zone";
+    ASSERT_LT(slipRight, 1e29) << "step " << s + 1 << ": no slip on the right";
+    ASSERT_GT(slipLeft, -1e29) << "step " << s + 1 << ": no slip on the left";
+    const double inner = (right - left) / 2, outer = (slipRight - slipLeft) / 2;
+    // Node spacing in the contact zone: the largest gap between active nodes.
+    std::vector<double> active;
+    for (std::size_t i = 0; i < state.size(); ++i)
+      if (state[i] > 0.5) active.push_back(coordinates[2 * i]);
+    std::sort(active.begin(), active.end());
+    double spacing = 0;
+    for (std::size_t k = 1; k < active.size(); ++k) spacing = std::max(spacing, active[k] - active[k - 1]);
+    EXPECT_GT(Q / (kMu * P), 0.1 * static_cast<double>(s - 4)) << "step " << s + 1;  // the load rises
+    EXPECT_LT(Q / (kMu * P), 1.0) << "step " << s + 1;
+    // A tight bracket: at most two node spacings wide (the nodal stick zone
+    // may sit off-centre by one node; the spacing is a / 13 to a / 8).
+    EXPECT_LE(outer - inner, 2 * spacing) << "step " << s + 1;
+    EXPECT_LE(inner, c + 0.1 * spacing) << "step " << s + 1 << ": Q/muP " << Q / (kMu * P) << " c " << c;
+    EXPECT_GE(outer, c - 0.1 * spacing) << "step " << s + 1 << ": Q/muP " << Q / (kMu * P) << " c " << c;
+    ++measured;
+  }
+  EXPECT_EQ(measured, 5);
 }
 
 // 3D (xml/friction_patch_3d.xml): stick with tau = mu p / 2 is exact
