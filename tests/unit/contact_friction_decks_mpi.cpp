@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "ContactTestSupport.hpp"
@@ -185,6 +186,71 @@ TEST(FrictionCattaneoMindlin, StickZoneFollowsTheory) {
     ++measured;
   }
   EXPECT_EQ(measured, 5);
+}
+
+/// Pressed (t = 5) against turned by 30 degrees (last step), per active node.
+struct RotationChange {
+  bool sameStates = false;
+  double pressure = 0, traction = 0, slip = 0, force = 0, peakPressure = 0;
+};
+RotationChange changeUnderRotation(const ContactRun& run) {
+  const auto& r = run.results;
+  std::size_t pressed = 0;
+  for (std::size_t s = 0; s < r.times.size(); ++s)
+    if (std::abs(r.times[s] - 5.0) < 1e-12) pressed = s;
+  const std::size_t turned = r.times.size() - 1;
+  auto nodal = [&r](std::size_t s, const char* name) { return r.nodal[s][r.nodalIndex(name)]; };
+  RotationChange c;
+  const auto state0 = nodal(pressed, "contact_state"), state1 = nodal(turned, "contact_state");
+  c.sameStates = state0 == state1;
+  const auto p0 = nodal(pressed, "contact_pressure"), p1 = nodal(turned, "contact_pressure");
+  const auto tx0 = nodal(pressed, "contact_tangential_traction_x"), ty0 = nodal(pressed, "contact_tangential_traction_y");
+  const auto tx1 = nodal(turned, "contact_tangential_traction_x"), ty1 = nodal(turned, "contact_tangential_traction_y");
+  const auto sx0 = nodal(pressed, "contact_slip_x"), sy0 = nodal(pressed, "contact_slip_y");
+  const auto sx1 = nodal(turned, "contact_slip_x"), sy1 = nodal(turned, "contact_slip_y");
+  for (std::size_t i = 0; i < state0.size(); ++i) {
+    if (state0[i] < 0.5) continue;
+    c.peakPressure = std::max(c.peakPressure, p0[i]);
+    c.pressure = std::max(c.pressure, std::abs(p1[i] - p0[i]));
+    c.traction = std::max(c.traction, std::abs(std::hypot(tx1[i], ty1[i]) - std::hypot(tx0[i], ty0[i])));
+    c.slip = std::max(c.slip, std::hypot(sx1[i] - sx0[i], sy1[i] - sy0[i]));
+  }
+  // The contact force turns with the bodies.
+  const double angle = std::acos(-1.0) / 6;
+  const double fx = r.global[pressed][r.globalIndex("contact_force_cylinder_x")];
+  const double fy = r.global[pressed][r.globalIndex("contact_force_cylinder_y")];
+  const double gx = r.global[turned][r.globalIndex("contact_force_cylinder_x")];
+  const double gy = r.global[turned][r.globalIndex("contact_force_cylinder_y")];
+  c.force = std::hypot(gx - (std::cos(angle) * fx - std::sin(angle) * fy), gy - (std::sin(angle) * fx + std::cos(angle) * fy)) /
+            std::hypot(fx, fy);
+  return c;
+}
+
+// Frame indifference (xml/frame_indifference_2d.xml): both bodies, pressed
+// and sticking, turn rigidly by 30 degrees. With the objective slip (4.69b)
+// nothing changes but the orientation (measured 1e-10 p0, 2e-12 mm); the
+// non-objective slip (4.65a) fails the test (measured 3e-5 p0 and 8e-6 mm).
+TEST(FrictionFrameIndifference, ObjectiveSlipKeepsTheContactUnderRigidRotation) {
+  auto objective = runDeck("frame_indifference_2d");
+  ShippedDeck deck("frame_indifference_2d", "hertz2d.e");
+  deck.replace("<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0.3\"/>",
+               "<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0.3\"/><Parameter name=\"Slip "
+               "Measure\" type=\"string\" value=\"Non-Objective\"/>");
+  auto nonObjective = runDeckText("frame_indifference_non_objective", deck.text);
+  if (worldComm()->getRank() != 0) return;
+  const auto o = changeUnderRotation(objective), n = changeUnderRotation(nonObjective);
+  std::printf("objective: pressure %.2e, traction %.2e (of p0 %.4g), slip %.2e, force %.2e\n", o.pressure, o.traction,
+              o.peakPressure, o.slip, o.force);
+  std::printf("non-objective: pressure %.2e, traction %.2e, slip %.2e, force %.2e\n", n.pressure, n.traction, n.slip,
+              n.force);
+  EXPECT_TRUE(o.sameStates);
+  EXPECT_LT(o.pressure, 1e-8 * o.peakPressure);
+  EXPECT_LT(o.traction, 1e-8 * o.peakPressure);
+  EXPECT_LT(o.slip, 1e-10);
+  EXPECT_LT(o.force, 1e-8);
+  // The non-objective measure sees the rotation as slip.
+  EXPECT_GT(n.traction, 1e-6 * n.peakPressure);
+  EXPECT_GT(n.slip, 1e-7);
 }
 
 // 3D (xml/friction_patch_3d.xml): stick with tau = mu p / 2 is exact

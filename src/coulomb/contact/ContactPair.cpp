@@ -157,6 +157,11 @@ void ContactPair::restoreStep() {
   state_ = stepStartState_;
   lambdaN_ = stepStartLambdaN_;
   for (std::size_t i = 0; i < state_.size(); ++i) slipIncrement_[i] = weightedSlip_[i] = {0.0, 0.0, 0.0};
+  // The retry calls beginStep() again: it must see the converged state of
+  // the previous step, not the failed iterate (the slip's Dᵗ, Mᵗ, xᵗ).
+  mortar_ = stepStartMortar_;
+  x_ = stepStartX_;
+  --steps_;
   searched_ = false;
 }
 

@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 /// @file DirichletConstraints.hpp
 /// @brief Prescribed displacement DoFs and their values in time.
 ///
@@ -29,16 +30,27 @@ public:
   std::vector<int> ownedConstrainedDofs() const;
 
 private:
+  /// A node turned rigidly by a condition with a Rotation Angle.
+  struct NodeRotation {
+    std::array<double, 3> X{};           ///< reference position
+    std::array<double, 3> offset{};      ///< displacement prescribed before, per component: offset × base(t)
+    std::array<const TimeFunction*, 3> base{};
+    const DirichletCondition* rotation = nullptr;
+  };
   struct Prescribed {
     int ownedLocalDof;
     double offset;  ///< Value + c · X
     const TimeFunction* function;
+    int component = 0;
+    int rotation = -1;  ///< index in rotations_, or -1
   };
-  double prescribed(const Prescribed& p, double time) const { return p.offset * (*p.function)(time); }
+  double prescribed(const Prescribed& p, double time) const;
 
   std::vector<DirichletCondition> conditions_;  // owns the TimeFunctions pointed to
   std::vector<char> constrained_;
   std::vector<Prescribed> owned_;
+  std::vector<NodeRotation> rotations_;
+  int dim_ = 3;
 };
 
 }  // namespace coulomb::fem

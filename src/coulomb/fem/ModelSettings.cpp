@@ -1,5 +1,7 @@
 #include "coulomb/fem/ModelSettings.hpp"
 
+#include <cmath>
+
 #include <limits>
 
 #include <Teuchos_Array.hpp>
@@ -74,6 +76,11 @@ void addValidModelParameters(ParameterList& valid) {
   d.set("Value", 0.0, "constant part of the prescribed displacement [length]");
   d.set("Linear Coefficients", Array<double>(), "optional gradient: adds c . X (one entry per dimension)");
   d.set("Function", "ramp", kFunctionDoc);
+  d.set("Rotation Angle", 0.0,
+        "rigid rotation [rad] of the node set, times Function: carries the displacements prescribed on these nodes by "
+        "the conditions listed before (Component all; no Value or Linear Coefficients)");
+  d.set("Rotation Center", Array<double>(), "centre of the rotation (one entry per dimension; default the origin)");
+  d.set("Rotation Axis", Array<double>(), "3D: axis of the rotation (default z)");
 
   ParameterList& neumann = valid.sublist("Neumann Conditions", false, "Surface loads on side sets, named freely");
   ParameterList& n = neumann.sublist("*", false, "a dead load on the reference surface");
@@ -146,6 +153,24 @@ ModelSettings parseModelSettings(const ParameterList& deck, int dimension) {
       c.linearCoefficients.assign(coefficients.begin(), coefficients.begin() + dimension);
     }
     c.function = lookupFunction(deck, io::valueOrDefault<std::string>(d, validD, "Function"), where);
+    c.rotationAngle = io::valueOrDefault<double>(d, validD, "Rotation Angle");
+    if (c.rotationAngle != 0.0) {
+      COULOMB_REQUIRE(component == "all", "deck: '" << where << "/Rotation Angle' needs 'Component' = 'all'");
+      COULOMB_REQUIRE(!d.isParameter("Value") && !d.isParameter("Linear Coefficients"),
+                      "deck: '" << where << "/Rotation Angle' rotates the displacements of the conditions before it: "
+                                << "give no 'Value' or 'Linear Coefficients' with it");
+      if (d.isParameter("Rotation Center")) {
+        const auto center = vectorOfDimension(d.get<Array<double>>("Rotation Center"), dimension, where + "/Rotation Center");
+        for (int i = 0; i < dimension; ++i) c.rotationCenter[i] = center[i];
+      }
+      if (d.isParameter("Rotation Axis")) {
+        COULOMB_REQUIRE(dimension == 3, "deck: '" << where << "/Rotation Axis' is for 3D meshes (2D rotates about z)");
+        const auto axis = vectorOfDimension(d.get<Array<double>>("Rotation Axis"), 3, where + "/Rotation Axis");
+        const double norm = std::sqrt(axis[0] * axis[0] + axis[1] * axis[1] + axis[2] * axis[2]);
+        COULOMB_REQUIRE(norm > 0.0, "deck: '" << where << "/Rotation Axis' must not be zero");
+        for (int i = 0; i < 3; ++i) c.rotationAxis[i] = axis[i] / norm;
+      }
+    }
     model.dirichlet.push_back(std::move(c));
   }
 
