@@ -124,4 +124,51 @@ TEST(TripletAssembly, AddTripletsEqualsTheSumAppliedToAVector) {
   }
 }
 
+// MatrixSum: a second sum with the same pattern reuses the first result's
+// matrix with the new values; a different pattern builds a new one. Both
+// equal K + S applied to a vector.
+TEST(TripletAssembly, MatrixSumReusesTheMatrixWhenThePatternRepeats) {
+  auto comm = worldComm();
+  const GlobalOrdinal n = 4 * comm->getSize() + 3;
+  auto map = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(n), 0, comm));
+  std::vector<linalg::MatrixTriplet> k;
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
+    const GlobalOrdinal g = map->getGlobalElement(static_cast<LocalOrdinal>(i));
+    k.push_back({g, g, 3.0});
+    if (g > 0) k.push_back({g, g - 1, -1.0});
+  }
+  auto K = linalg::matrixFromTriplets(k, map);
+  auto triplets = [&](double scale, GlobalOrdinal shift) {
+    std::vector<linalg::MatrixTriplet> s;
+    if (comm->getRank() == comm->getSize() - 1)
+      for (GlobalOrdinal g = 0; g < n; ++g) s.push_back({g, (g + shift) % n, scale * static_cast<double>(g + 1)});
+    return s;
+  };
+  Vector x(map);
+  auto data = x.getDataNonConst(0);
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i)
+    data[i] = std::cos(0.3 + static_cast<double>(map->getGlobalElement(static_cast<LocalOrdinal>(i))));
+  auto expectSum = [&](const Teuchos::RCP<CrsMatrix>& sum, const std::vector<linalg::MatrixTriplet>& s) {
+    Vector expected(map), part(map), actual(map);
+    K->apply(x, expected);
+    linalg::matrixFromTriplets(s, map)->apply(x, part);
+    expected.update(1.0, part, 1.0);
+    sum->apply(x, actual);
+    actual.update(-1.0, expected, 1.0);
+    EXPECT_LT(actual.normInf(), 1e-13);
+  };
+  linalg::MatrixSum sum;
+  const auto s1 = triplets(1.0, n / 2), s2 = triplets(-2.0, n / 2), s3 = triplets(1.0, 1);
+  auto first = sum.add(*K, s1);
+  expectSum(first, s1);
+  auto second = sum.add(*K, s2);  // same pattern, new values: the same matrix
+  EXPECT_EQ(second.get(), first.get());
+  EXPECT_EQ(sum.reuses(), 1);
+  expectSum(second, s2);
+  auto third = sum.add(*K, s3);  // another pattern: a new matrix
+  EXPECT_NE(third.get(), first.get());
+  EXPECT_EQ(sum.reuses(), 1);
+  expectSum(third, s3);
+}
+
 }  // namespace coulomb::test

@@ -148,7 +148,7 @@ Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMat
   }
   static const auto addTimer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact K + interface rows");
   Teuchos::TimeMonitor addScope(*addTimer);
-  return linalg::addTriplets(*bulkTangent, interfaceRows);
+  return tangentSum_.add(*bulkTangent, interfaceRows);
 }
 
 bool ContactModel::converged() const {

@@ -62,7 +62,8 @@ public:
   void update(const Vector& u, const Vector& bulkResidual, bool freezeSet = false);
   /// residual := T (residual - f_c) + g   (residual: the bulk residual of the same u).
   void condenseResidual(Vector& residual) const;
-  /// J = T (K + K_c) + G as a new matrix (K unchanged); K itself when no pair contributes.
+  /// J = T (K + K_c) + G as a matrix that the next call may overwrite in place
+  /// (same pattern: the values are replaced); K unchanged; K itself when no pair contributes.
   Teuchos::RCP<CrsMatrix> condensedTangent(const Teuchos::RCP<CrsMatrix>& bulkTangent) const;
 
   /// The contributions of the last update (the saddle-point form included).
@@ -90,6 +91,7 @@ private:
   int updatesInStep_ = 0;
   Teuchos::RCP<CrsMatrix> transform_;  ///< T - I (for the residual)
   ContactContributions contributions_;
+  mutable linalg::MatrixSum tangentSum_;  ///< J = K + [...] with buffers (and J itself) reused per iterate
   bool contributes_ = false;  ///< some rank has transform or stiffness entries
 };
 
