@@ -66,6 +66,5 @@ coulomb_bad_input(contact_friction_negative_coefficient "'Contact/Pairs/punch/Fr
 coulomb_bad_input(contact_friction_tresca_zero_threshold "'Contact/Pairs/punch/Tresca Threshold' must be > 0")
 coulomb_bad_input(contact_friction_unknown_law "'Contact/Pairs/punch/Friction Law'")
 coulomb_bad_input(contact_friction_zero_tangent_factor "'Contact/Pairs/punch/Tangent Factor'")
-coulomb_bad_input(contact_friction_with_penalty "'Contact/Pairs/punch/Friction Law'.*Penalty is not implemented")
 coulomb_bad_input(dirichlet_rotation_with_value "'Dirichlet Conditions/turn/Rotation Angle'.*no 'Value'")
 coulomb_bad_input(contact_penetration_beyond_search_radius "Contact/Pairs/punch: slave node [0-9]+ penetrates the master by .*search radius")

@@ -114,6 +114,31 @@ TEST(FrictionPatch, ImposedSlipCarriesMuTimesPressure) {
   EXPECT_NEAR(lastGlobal(run.results, "reaction_top_x"), -Q, 1e-8 * kPressure);  // momentum balance
 }
 
+// Penalty friction (no multipliers, traction from a return map with the
+// converged traction as history): the imposed slip carries mu p per node,
+// and the sliding punch reaches gross slip at mu P.
+TEST(FrictionPenalty, ImposedSlipAndSlidingPunch) {
+  const std::string coulomb = "<Parameter name=\"Friction Law\" type=\"string\" value=\"Coulomb\"/>";
+  const std::string penalty = "<Parameter name=\"Formulation\" type=\"string\" value=\"Penalty\"/>" + coulomb;
+  ShippedDeck patch("friction_patch_2d", "contact_patch2d.e");
+  patch.replace(coulomb, penalty);
+  auto slip = runDeckText("friction_penalty_patch", patch.text);
+  ShippedDeck punch("friction_punch", "friction_punch.e");
+  punch.replace(coulomb, penalty);
+  auto sliding = runDeckText("friction_penalty_punch", punch.text);
+  EXPECT_EQ(sliding.summary.cutbacks, 0);
+  int newton = 0;
+  for (int iterations : sliding.summary.stepNewtonIterations) newton += iterations;
+  EXPECT_LE(newton, 4 * 24);
+  if (worldComm()->getRank() != 0) return;
+  const auto nodes = checkTractions(slip.results, [](double p) { return -kMu * p; }, 1e-6 * kPressure);
+  EXPECT_EQ(nodes.slip, 8);
+  const auto& r = sliding.results;
+  const double Q = std::abs(lastGlobal(r, "reaction_top_x")), P = -lastGlobal(r, "reaction_top_z");
+  EXPECT_NEAR(Q / P, kMu, 0.01 * kMu);
+  EXPECT_EQ(lastGlobal(r, "contact_stick_nodes_punch"), 0.0);
+}
+
 // Tresca: the tangential traction of a slipping node is the threshold,
 // whatever the pressure.
 TEST(FrictionPatch, TrescaSaturatesAtTheThreshold) {

@@ -46,8 +46,8 @@ std::string replaceAll(std::string text, const std::string& from, const std::str
 /// Runs a shipped Hertz deck on a distorted copy of its mesh with the given formulation.
 std::unique_ptr<solver::Simulation> solveDistorted(const std::string& deck, const std::string& mesh,
                                                    const std::string& formulation, const std::string& friction = "") {
-  const std::string dir =
-      scratchDirectory("contact_jacobian_" + deck + "_" + formulation + (friction.empty() ? "" : "_friction"));
+  const std::string dir = scratchDirectory("contact_jacobian_" + deck + "_" + formulation +
+                                           (friction.empty() ? "" : "_friction" + std::to_string(friction.size())));
   writeDistortedCopy(shippedMesh(mesh), dir + "/mesh.e", 0.15);
   std::string text = readFile(std::string(COULOMB_SOURCE_DIR) + "/xml/" + deck + ".xml");
   text = replaceAll(text, "../exodus_meshes/" + mesh, "mesh.e");
@@ -122,8 +122,9 @@ const std::string kNonObjective = "<Parameter name=\"Slip Measure\" type=\"strin
 /// against 3e-10 perturbed, a one-sided derivative of the mortar operators'
 /// overlap there, not investigated further; the test takes the perturbed state.)
 void expectFrictionalTangentMatchesDifferences(const std::string& deck, const std::string& mesh,
-                                               const std::string& measure, bool atEquilibrium) {
-  auto simulation = solveDistorted(deck, mesh, "ALM", kCoulomb + measure);
+                                               const std::string& measure, bool atEquilibrium,
+                                               const std::string& formulation = "ALM") {
+  auto simulation = solveDistorted(deck, mesh, formulation, kCoulomb + measure);
   const auto& set = simulation->contact()->lastSummary().activeSet;
   EXPECT_GT(set.active, 5u);
   EXPECT_GT(set.stick, 0u);
@@ -140,6 +141,14 @@ TEST(ContactJacobian, Coulomb2DMatchesFiniteDifferences) {
 
 TEST(ContactJacobian, Coulomb3DMatchesFiniteDifferences) {
   expectFrictionalTangentMatchesDifferences("hertz3d_quarter", "hertz3d_quarter.e", "", false);
+}
+
+TEST(ContactJacobian, PenaltyCoulomb2DMatchesFiniteDifferences) {
+  expectFrictionalTangentMatchesDifferences("hertz2d", "hertz2d.e", "", true, "Penalty");
+}
+
+TEST(ContactJacobian, PenaltyCoulomb3DMatchesFiniteDifferences) {
+  expectFrictionalTangentMatchesDifferences("hertz3d_quarter", "hertz3d_quarter.e", "", false, "Penalty");
 }
 
 TEST(ContactJacobian, Coulomb3DNonObjectiveSlipMatchesFiniteDifferences) {

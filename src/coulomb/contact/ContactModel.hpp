@@ -50,7 +50,7 @@ public:
   const std::vector<std::unique_ptr<ContactPair>>& pairs() const { return pairs_; }
   /// True when some pair has friction.
   bool anyFrictional() const;
-  /// True when some pair is ALM: the condensed tangent is not symmetric.
+  /// True when some pair is ALM or frictional: the tangent is not symmetric.
   bool needsNonsymmetricSolver() const;
 
   void beginStep();

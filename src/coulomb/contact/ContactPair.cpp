@@ -126,7 +126,7 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
   lambdaN_.assign(owned, 0.0);
   pressure_.assign(owned, 0.0);
   traction_.assign(owned, {0.0, 0.0, 0.0});
-  weightedSlip_ = slipIncrement_ = accumulatedSlip_ = stepStartAccumulatedSlip_ = traction_;
+  weightedSlip_ = slipIncrement_ = accumulatedSlip_ = stepStartAccumulatedSlip_ = stepStartTraction_ = traction_;
   beginStep();
 }
 
@@ -143,6 +143,7 @@ void ContactPair::beginStep() {
     slipIncrement_[i] = weightedSlip_[i] = {0.0, 0.0, 0.0};
   }
   stepStartAccumulatedSlip_ = accumulatedSlip_;
+  stepStartTraction_ = traction_;
   // Slip reset policy: slipping nodes start the step as stick every n-th step.
   const int n = settings_.slipResetFrequency;
   if (frictional() && n > 0 && steps_ % n == 0)
@@ -161,6 +162,7 @@ void ContactPair::restoreStep() {
   // the previous step, not the failed iterate (the slip's Dᵗ, Mᵗ, xᵗ).
   mortar_ = stepStartMortar_;
   x_ = stepStartX_;
+  traction_ = stepStartTraction_;
   --steps_;
   searched_ = false;
 }

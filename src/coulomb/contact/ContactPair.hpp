@@ -123,6 +123,8 @@ private:
   void differentiateActive();
   /// update() for frictional pairs (ContactPairFriction.cpp).
   PairIterationSummary updateFrictional(const Vector& bulkResidual, bool updateSet, ContactContributions& out);
+  /// The same for the penalty formulation (forces, no condensation).
+  PairIterationSummary updatePenaltyFrictional(bool updateSet, ContactContributions& out);
   /// Weighted slip w_j of the step (seed sign) and, when `derivative` is
   /// given, dw_c / dx as three rows.
   std::array<double, 3> weightedSlip(const NodalMortarEntry& entry, std::array<DerivativeRow, 3>* derivative) const;
@@ -159,7 +161,7 @@ private:
   NodalMortarQuantities stepStartMortar_;
   InterfaceConfiguration stepStartX_;
   int steps_ = 0;
-  std::vector<std::array<double, 3>> traction_, weightedSlip_, slipIncrement_, accumulatedSlip_,
+  std::vector<std::array<double, 3>> traction_, stepStartTraction_, weightedSlip_, slipIncrement_, accumulatedSlip_,
       stepStartAccumulatedSlip_;
 };
 

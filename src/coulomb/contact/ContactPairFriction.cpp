@@ -156,6 +156,7 @@ std::array<double, 3> ContactPair::weightedSlip(const NodalMortarEntry& entry,
 
 PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, bool updateSet,
                                                    ContactContributions& out) {
+  if (settings_.formulation == ContactFormulation::Penalty) return updatePenaltyFrictional(updateSet, out);
   const auto r = bulkResidual.getData(0);
   const auto& map = *dofMap_;
   const auto& slaveNodes = interface_->slaveNodes();
@@ -307,6 +308,163 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
         if (dM != entry->dM.end()) addScaled(row, dM->second, k.lambda[c]);
         emit(target, row, kt);
       }
+  }
+  reduceSummary(summary);
+  return summary;
+}
+
+namespace {
+
+/// Penalty kernel of either dimension, widened to 3 components and the 8
+/// inputs of 3D (n 0-2, w 3-5, D 6, g~ 7).
+struct PenaltyForce {
+  std::array<double, 3> force{}, traction{};
+  double pressure = 0;
+  std::array<std::array<double, 8>, 3> dForce{};
+};
+
+template <int dim>
+PenaltyFrictionalInput<dim> penaltyInput(const std::array<double, 3>& n, const std::array<double, 3>& w,
+                                         const std::array<double, 3>& oldTraction, double D, double gap) {
+  PenaltyFrictionalInput<dim> in;
+  for (int c = 0; c < dim; ++c) {
+    in.normal[c] = n[c];
+    in.slip[c] = w[c];
+    in.oldTraction[c] = oldTraction[c];
+  }
+  in.D = D;
+  in.gap = gap;
+  return in;
+}
+
+template <int dim>
+PenaltyForce widenPenalty(const PenaltyFrictionalForce<dim>& k) {
+  PenaltyForce out;
+  out.pressure = k.pressure;
+  auto input = [](int i) { return i < dim ? i : i < 2 * dim ? 3 + i - dim : 6 + i - 2 * dim; };
+  for (int c = 0; c < dim; ++c) {
+    out.force[c] = k.force[c];
+    out.traction[c] = k.traction[c];
+    for (int i = 0; i < kPenaltyFrictionalInputs<dim>; ++i) out.dForce[c][input(i)] = k.dForce[c][i];
+  }
+  return out;
+}
+
+}  // namespace
+
+PairIterationSummary ContactPair::updatePenaltyFrictional(bool updateSet, ContactContributions& out) {
+  const auto& slaveNodes = interface_->slaveNodes();
+  const auto& owned = interface_->ownedSlaveNodes();
+  FrictionalParameters p;
+  p.k = k_;
+  p.epsN = epsN_;
+  p.epsTau = settings_.tangentFactor * epsN_;
+  p.thickness = thickness_;
+  p.slipAugmentation = settings_.slipAugmentation;
+  p.slipThreshold = settings_.slipThreshold;
+  p.law = settings_.friction;
+  auto decide = [&](const std::array<double, 3>& n, const std::array<double, 3>& w, std::size_t i, double D,
+                    double gap, ContactState previous) {
+    return dim_ == 2 ? penaltyFrictionalState<2>(penaltyInput<2>(n, w, stepStartTraction_[i], D, gap), previous, p)
+                     : penaltyFrictionalState<3>(penaltyInput<3>(n, w, stepStartTraction_[i], D, gap), previous, p);
+  };
+  auto force = [&](const std::array<double, 3>& n, const std::array<double, 3>& w, std::size_t i, double D,
+                   double gap, ContactState state) {
+    return dim_ == 2
+               ? widenPenalty<2>(penaltyFrictionalForce<2>(penaltyInput<2>(n, w, stepStartTraction_[i], D, gap), state, p))
+               : widenPenalty<3>(penaltyFrictionalForce<3>(penaltyInput<3>(n, w, stepStartTraction_[i], D, gap), state, p));
+  };
+
+  // Stage 1: the sets (values).
+  PairIterationSummary summary;
+  std::string failure;
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    const int s = owned[i];
+    const long long node = slaveNodes[s];
+    const ContactState previous = state_[i];
+    const NodalMortarEntry* entry = mortar_.find(node);
+    ContactState state = ContactState::Inactive;
+    if (entry != nullptr && entry->D > minimumD_) {
+      const auto w = weightedSlip(*entry, nullptr);
+      weightedSlip_[i] = w;
+      for (int c = 0; c < 3; ++c) slipIncrement_[i][c] = -w[c] / entry->D;
+      state = decide(normals_[s].n, w, i, entry->D, entry->gap, previous);
+      if (!updateSet) {
+        if (state != previous) ++summary.violations;
+        state = previous;
+      }
+      if (isActive(state) && entry->gap / entry->D < -radius_ && failure.empty()) {
+        std::ostringstream message;
+        message << "Contact/Pairs/" << settings_.name << ": slave node " << node + 1 << " penetrates the master by "
+                << -entry->gap / entry->D << ", more than the search radius " << radius_
+                << ": raise 'Search Radius Factor' or use more load steps";
+        failure = message.str();
+      }
+    }
+    state_[i] = state;
+    if (!isActive(state)) traction_[i] = {0.0, 0.0, 0.0}, lambdaN_[i] = pressure_[i] = 0.0;
+    countState(summary.activeSet, state, previous);
+  }
+  throwIfAnyRankFailed(*interface_->comm(), failure);
+  differentiateActive();
+
+  // Stage 2: forces f on the slave (residual -f, K_c = -df/dx) and -(M/D) f on the masters.
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    if (!isActive(state_[i])) continue;
+    const int s = owned[i];
+    const long long node = slaveNodes[s];
+    const NodalMortarEntry* entry = mortarDerivatives_.find(node);
+    if (entry == nullptr) continue;
+    const auto& n = normalDerivatives_[s].n;
+    const auto& dn = normalDerivatives_[s].derivative;
+    std::array<DerivativeRow, 3> dw;
+    const auto w = weightedSlip(*entry, &dw);
+    const double D = entry->D;
+    const PenaltyForce f = force(n, w, i, D, entry->gap, state_[i]);
+    pressure_[i] = f.pressure;
+    lambdaN_[i] = -f.pressure / k_;
+    for (int c = 0; c < 3; ++c) traction_[i][c] = f.traction[c] - f.pressure * n[c];
+    double fn = 0;
+    for (int c = 0; c < dim_; ++c) fn += f.force[c] * n[c];
+    for (int c = 0; c < dim_; ++c) {
+      summary.slaveForce[c] += f.force[c];
+      summary.normalForce[c] += fn * n[c];
+      summary.tangentialForce[c] += f.force[c] - fn * n[c];
+      summary.contactForce2 += f.force[c] * f.force[c];
+    }
+    auto derivative = [&](int c) {
+      DerivativeRow row;
+      for (const auto& nd : dn)
+        for (int m = 0; m < dim_; ++m)
+          if (f.dForce[c][m] != 0.0) row[{nd.node, nd.component}] += f.dForce[c][m] * nd.dn[m];
+      for (int m = 0; m < dim_; ++m) addScaled(row, dw[m], f.dForce[c][3 + m]);
+      addScaled(row, entry->dD, f.dForce[c][6]);
+      addScaled(row, entry->dGap, f.dForce[c][7]);
+      return row;
+    };
+    auto emit = [&](GlobalOrdinal target, const DerivativeRow& row, double scale) {
+      for (const auto& [key, value] : row)
+        if (value != 0.0 && !isPrescribed(key.first, key.second))
+          out.contactStiffness.push_back({target, dofRow(key.first, key.second), scale * value});
+    };
+    for (int c = 0; c < dim_; ++c) {
+      const DerivativeRow df = derivative(c);
+      if (!isPrescribed(node, c)) {
+        out.contactResidual.push_back({dofRow(node, c), -f.force[c]});
+        emit(dofRow(node, c), df, -1.0);
+      }
+      for (const auto& [master, Mjl] : entry->M) {
+        if (isPrescribed(master, c)) continue;
+        const GlobalOrdinal target = dofRow(master, c);
+        out.contactResidual.push_back({target, Mjl / D * f.force[c]});
+        DerivativeRow row = df;
+        for (auto& [key, value] : row) value *= Mjl / D;
+        const auto dM = entry->dM.find(master);
+        if (dM != entry->dM.end()) addScaled(row, dM->second, f.force[c] / D);
+        addScaled(row, entry->dD, -Mjl * f.force[c] / (D * D));
+        emit(target, row, 1.0);
+      }
+    }
   }
   reduceSummary(summary);
   return summary;

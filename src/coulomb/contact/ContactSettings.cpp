@@ -58,14 +58,15 @@ void addValidContactParameters(ParameterList& valid) {
            "search radius = this x the largest slave face diameter: must exceed the gap closed in one step",
            io::positive());
   pair.set("Friction Law", "None",
-           "None: frictionless; Coulomb: |t_tau| <= mu p; Tresca: |t_tau| <= Tresca Threshold (ALM only)",
+           "None: frictionless; Coulomb: |t_tau| <= mu p; Tresca: |t_tau| <= Tresca Threshold",
            io::oneOf({"None", "Coulomb", "Tresca"}));
   pair.set("Friction Coefficient", d.friction.coefficient, "Coulomb's mu (0: pure slip)", io::nonNegative());
   pair.set("Tresca Threshold", d.friction.threshold,
            "Tresca's limit of the tangential traction [pressure], required (> 0) with Friction Law = Tresca",
            io::nonNegative());
   pair.set("Tangent Factor", d.tangentFactor,
-           "kappa: tangential penalty eps_tau = kappa eps_n of the stick/slip test and the slip direction",
+           "kappa: tangential penalty eps_tau = kappa eps_n (ALM: stick/slip test and slip direction; Penalty: the "
+           "tangential stiffness of a sticking contact)",
            io::positive());
   pair.set("Slip Threshold", d.slipThreshold,
            "hysteresis: a slipping node sticks again only below (1 - this) x the friction threshold", io::nonNegative());
@@ -136,9 +137,6 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
     COULOMB_REQUIRE(s.friction.type == FrictionLawType::Tresca || !p.isParameter("Tresca Threshold"),
                     where << "Tresca Threshold' is given but 'Friction Law' is not Tresca");
     COULOMB_REQUIRE(s.slipThreshold < 1.0, where << "Slip Threshold' must be < 1, got " << s.slipThreshold);
-    COULOMB_REQUIRE(s.formulation == ContactFormulation::ALM || !s.frictional(),
-                    where << "Friction Law': friction with Formulation = Penalty is not implemented yet; use "
-                             "Formulation = ALM");
     COULOMB_REQUIRE(s.slave != s.master, "deck: 'Contact/Pairs/" << name << "' names side set '" << s.slave
                                                                   << "' as both Slave and Master");
     settings.pairs.push_back(std::move(s));

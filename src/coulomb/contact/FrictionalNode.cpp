@@ -166,11 +166,81 @@ FrictionalNodeRows<dim> frictionalRows(const FrictionalNodeInput<dim>& in, Conta
   return out;
 }
 
+namespace {
+
+/// Pressure, trial traction and the traction of `state` for one scalar type.
+template <int dim, class S>
+void penaltyTerms(const std::array<S, dim>& n, const std::array<S, dim>& w, const S& D, const S& gap,
+                  const std::array<double, dim>& oldTraction, ContactState state, const FrictionalParameters& p,
+                  S& pressure, std::array<S, dim>& trial, std::array<S, dim>& traction, S& trialNorm, S& threshold) {
+  using std::sqrt;
+  pressure = valueOf(gap) < 0.0 ? S(-p.epsN * gap / D) : S(0.0);
+  S nOld = 0.0;
+  for (int c = 0; c < dim; ++c) nOld += n[c] * oldTraction[c];
+  for (int c = 0; c < dim; ++c) trial[c] = oldTraction[c] - nOld * n[c];
+  S nw = 0.0;
+  for (int c = 0; c < dim; ++c) nw += n[c] * w[c];
+  for (int c = 0; c < dim; ++c) trial[c] += p.epsTau * (w[c] - nw * n[c]) / D;
+  S norm2 = 0.0;
+  for (int c = 0; c < dim; ++c) norm2 += trial[c] * trial[c];
+  trialNorm = valueOf(norm2) > 0.0 ? S(sqrt(norm2)) : S(0.0);
+  threshold = frictionThreshold(p.law, S(-pressure));
+  for (int c = 0; c < dim; ++c)
+    traction[c] = state == ContactState::Stick ? trial[c]
+                  : valueOf(trialNorm) > 0.0   ? S(threshold * trial[c] / trialNorm)
+                                               : S(0.0);
+}
+
+}  // namespace
+
+template <int dim>
+ContactState penaltyFrictionalState(const PenaltyFrictionalInput<dim>& in, ContactState previous,
+                                    const FrictionalParameters& p) {
+  checkParameters(in.D, p);
+  if (in.gap > 0.0) return ContactState::Inactive;
+  double pressure = 0, trialNorm = 0, threshold = 0;
+  std::array<double, dim> trial{}, traction{};
+  penaltyTerms<dim, double>(in.normal, in.slip, in.D, in.gap, in.oldTraction, ContactState::Stick, p, pressure, trial,
+                            traction, trialNorm, threshold);
+  return stickSlipState(trialNorm, threshold, isActive(previous) ? previous : ContactState::Stick, p.slipThreshold);
+}
+
+template <int dim>
+PenaltyFrictionalForce<dim> penaltyFrictionalForce(const PenaltyFrictionalInput<dim>& in, ContactState state,
+                                                   const FrictionalParameters& p) {
+  checkParameters(in.D, p);
+  COULOMB_REQUIRE(isActive(state), "contact: penalty frictional force of an inactive node");
+  constexpr int N = kPenaltyFrictionalInputs<dim>;
+  using Fad = Sacado::Fad::SFad<double, N>;
+  std::array<Fad, dim> n, w;
+  for (int c = 0; c < dim; ++c) {
+    n[c] = Fad(N, c, in.normal[c]);
+    w[c] = Fad(N, dim + c, in.slip[c]);
+  }
+  const Fad D(N, 2 * dim, in.D), gap(N, 2 * dim + 1, in.gap);
+  Fad pressure, trialNorm, threshold;
+  std::array<Fad, dim> trial, traction;
+  penaltyTerms<dim, Fad>(n, w, D, gap, in.oldTraction, state, p, pressure, trial, traction, trialNorm, threshold);
+  PenaltyFrictionalForce<dim> out;
+  out.pressure = pressure.val();
+  for (int c = 0; c < dim; ++c) {
+    const Fad f = p.thickness * D * (traction[c] - pressure * n[c]);
+    out.force[c] = f.val();
+    out.traction[c] = traction[c].val();
+    for (int i = 0; i < N; ++i) out.dForce[c][i] = f.dx(i);
+  }
+  return out;
+}
+
 #define COULOMB_FRICTIONAL_NODE_INSTANTIATE(DIM)                                                              \
   template FrictionalNodeState<DIM> frictionalState<DIM>(const FrictionalNodeInput<DIM>&, ContactState,       \
                                                          const FrictionalParameters&);                        \
   template FrictionalNodeRows<DIM> frictionalRows<DIM>(const FrictionalNodeInput<DIM>&, ContactState,         \
-                                                       const FrictionalParameters&);
+                                                       const FrictionalParameters&);                          \
+  template ContactState penaltyFrictionalState<DIM>(const PenaltyFrictionalInput<DIM>&, ContactState,         \
+                                                    const FrictionalParameters&);                             \
+  template PenaltyFrictionalForce<DIM> penaltyFrictionalForce<DIM>(const PenaltyFrictionalInput<DIM>&,        \
+                                                                   ContactState, const FrictionalParameters&);
 COULOMB_FRICTIONAL_NODE_INSTANTIATE(2)
 COULOMB_FRICTIONAL_NODE_INSTANTIATE(3)
 #undef COULOMB_FRICTIONAL_NODE_INSTANTIATE

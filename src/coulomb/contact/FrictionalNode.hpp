@@ -99,11 +99,60 @@ template <int dim>
 FrictionalNodeRows<dim> frictionalRows(const FrictionalNodeInput<dim>& in, ContactState state,
                                        const FrictionalParameters& p);
 
+// ---------------------------------------------------------------------------
+// Penalty friction (seed 4.71a with a return map): no multipliers; the
+// traction on the slave is
+//   normal      p = eps_n <-g~> / D                       (as frictionless penalty)
+//   tangential  trial t* = P t_old + eps_tau w / D         (P = I - n n^T; t_old the
+//               converged tangential traction of the last step, w the weighted slip)
+//               stick: t = t*;  slip: t = Θ t* / |t*|, Θ = the law's threshold at
+//               lambdā_n = -p
+// and the force acting on the slave node is f = t D (-p n + t) (t: 2D thickness);
+// the master nodes get -(M_jl / D) f. The history t_old makes a sticking
+// contact keep its traction from step to step (the slip w restarts each step).
+
+/// Inputs of the penalty force derivatives, in this order: n (dim), w (dim), D, g~.
+template <int dim>
+inline constexpr int kPenaltyFrictionalInputs = 2 * dim + 2;
+
+template <int dim>
+struct PenaltyFrictionalInput {
+  std::array<double, dim> normal{};
+  std::array<double, dim> slip{};             ///< weighted slip of the step w (seed sign)
+  std::array<double, dim> oldTraction{};      ///< converged tangential traction of the last step
+  double D = 0.0;
+  double gap = 0.0;
+};
+
+template <int dim>
+struct PenaltyFrictionalForce {
+  std::array<double, dim> force{};      ///< force acting on the slave node
+  std::array<double, dim> traction{};   ///< tangential traction t
+  double pressure = 0.0;                ///< p
+  /// d force[c] / d input[i]; inputs ordered n, w, D, g~.
+  std::array<std::array<double, kPenaltyFrictionalInputs<dim>>, dim> dForce{};
+};
+
+/// @brief Penalty rule: Inactive when g~ > 0; else Stick when |t*| <= Θ
+/// (hysteresis as stickSlipState for a node already slipping), Active (slip) otherwise.
+template <int dim>
+ContactState penaltyFrictionalState(const PenaltyFrictionalInput<dim>& in, ContactState previous,
+                                    const FrictionalParameters& p);
+
+/// @brief The force of an active penalty node in `state` (Active = slip, or Stick).
+template <int dim>
+PenaltyFrictionalForce<dim> penaltyFrictionalForce(const PenaltyFrictionalInput<dim>& in, ContactState state,
+                                                   const FrictionalParameters& p);
+
 #define COULOMB_FRICTIONAL_NODE_EXTERN(DIM)                                                                  \
   extern template FrictionalNodeState<DIM> frictionalState<DIM>(const FrictionalNodeInput<DIM>&, ContactState, \
                                                                 const FrictionalParameters&);                \
   extern template FrictionalNodeRows<DIM> frictionalRows<DIM>(const FrictionalNodeInput<DIM>&, ContactState,  \
-                                                              const FrictionalParameters&);
+                                                              const FrictionalParameters&);               \
+  extern template ContactState penaltyFrictionalState<DIM>(const PenaltyFrictionalInput<DIM>&, ContactState,  \
+                                                           const FrictionalParameters&);                    \
+  extern template PenaltyFrictionalForce<DIM> penaltyFrictionalForce<DIM>(const PenaltyFrictionalInput<DIM>&, \
+                                                                          ContactState, const FrictionalParameters&);
 COULOMB_FRICTIONAL_NODE_EXTERN(2)
 COULOMB_FRICTIONAL_NODE_EXTERN(3)
 #undef COULOMB_FRICTIONAL_NODE_EXTERN
