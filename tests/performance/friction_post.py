@@ -304,12 +304,14 @@ def console_keys(text, schedule=None):
     return out
 
 
-def analyze_files(result, log=None, deck=None, mu=None):
-    """everything above for one run: the Exodus keys, plus the console keys with a log"""
+def analyze_files(result, log=None, deck=None, mu=None, ux=UX, sym_factor=SYM_FACTOR):
+    """everything above for one run: the Exodus keys, plus the console keys with
+    a log (ux, sym_factor: see analyze; ironing_post.py passes its own)"""
     info = read_deck(deck)
     mu = info["mu"] if info["mu"] is not None else (mu if mu is not None else MU)
     frictional = info["friction_law"] not in (None, "None")
-    out = analyze(read_history(result), mu, info["schedule"], frictional=frictional)
+    out = analyze(read_history(result), mu, info["schedule"], frictional=frictional, ux=ux,
+                  sym_factor=sym_factor)
     out["frictionless"] = (not frictional) if deck else None
     out["formulation"] = info["formulation"]
     if log:

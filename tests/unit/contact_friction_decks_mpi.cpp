@@ -262,8 +262,18 @@ TEST(FrictionFrameIndifference, ObjectiveSlipKeepsTheContactUnderRigidRotation) 
                "<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0.3\"/><Parameter name=\"Slip "
                "Measure\" type=\"string\" value=\"Non-Objective\"/>");
   auto nonObjective = runDeckText("frame_indifference_non_objective", deck.text);
+  // An operator threshold above every relative change of D and M (a rigid
+  // rotation changes none) falls back to the non-objective measure.
+  ShippedDeck threshold("frame_indifference_2d", "hertz2d.e");
+  threshold.replace("<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0.3\"/>",
+                    "<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0.3\"/><Parameter name=\"Operator "
+                    "Threshold\" type=\"double\" value=\"1e-3\"/>");
+  auto switched = runDeckText("frame_indifference_operator_threshold", threshold.text);
   if (worldComm()->getRank() != 0) return;
   const auto o = changeUnderRotation(objective), n = changeUnderRotation(nonObjective);
+  const auto t = changeUnderRotation(switched);
+  std::printf("operator threshold 1e-3: traction %.2e, slip %.2e\n", t.traction, t.slip);
+  EXPECT_GT(t.slip, 1e-7);
   std::printf("objective: pressure %.2e, traction %.2e (of p0 %.4g), slip %.2e, force %.2e\n", o.pressure, o.traction,
               o.peakPressure, o.slip, o.force);
   std::printf("non-objective: pressure %.2e, traction %.2e, slip %.2e, force %.2e\n", n.pressure, n.traction, n.slip,

@@ -6,6 +6,7 @@
 /// contact", has the system.
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <sstream>
 
 #include <Tpetra_Map.hpp>
@@ -101,7 +102,16 @@ std::array<double, 3> ContactPair::weightedSlip(const NodalMortarEntry& entry,
   // Without operators of the last converged state (a node that had no
   // master in reach) only the non-objective measure exists.
   const NodalMortarEntry* previous = stepStartMortar_.find(entry.node);
-  const bool objective = settings_.slipMeasure == SlipMeasure::Objective && previous != nullptr;
+  bool objective = settings_.slipMeasure == SlipMeasure::Objective && previous != nullptr;
+  if (objective && settings_.operatorThreshold > 0.0) {
+    // Relative change of D_j and the M_jl over the step (the seed's OPERATOR_THRESHOLD).
+    double change = std::abs(entry.D - previous->D), size = std::abs(entry.D);
+    std::map<long long, double> difference;
+    for (const auto& [l, m] : entry.M) difference[l] += m, size += std::abs(m);
+    for (const auto& [l, m] : previous->M) difference[l] -= m;
+    for (const auto& [l, d] : difference) change += std::abs(d);
+    objective = change > settings_.operatorThreshold * size;
+  }
   auto point = [this](const InterfaceConfiguration& x, long long node) {
     return x.point(interface_->interfaceNodeIndex(node));
   };

@@ -81,6 +81,10 @@ void addValidContactParameters(ParameterList& valid) {
            "Objective: weighted slip from the change of the mortar operators (4.69b, frame indifferent); "
            "Non-Objective: from the displacement increments (4.65a)",
            io::oneOf({"Objective", "Non-Objective"}));
+  pair.set("Operator Threshold", d.operatorThreshold,
+           "objective slip only where the mortar operators changed by more than this (relative) over the step, "
+           "else the non-objective one; 0: objective whenever possible",
+           io::nonNegative());
   pair.set("Pure Slip", d.pureSlip, "active nodes slide without friction whatever the law (automatic when mu = 0)");
 }
 
@@ -129,6 +133,7 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
     s.slipMeasure = io::valueOrDefault<std::string>(p, v, "Slip Measure") == "Objective" ? SlipMeasure::Objective
                                                                                       : SlipMeasure::NonObjective;
     s.pureSlip = io::valueOrDefault<bool>(p, v, "Pure Slip");
+    s.operatorThreshold = io::valueOrDefault<double>(p, v, "Operator Threshold");
     const std::string where = "deck: 'Contact/Pairs/" + name + "/";
     COULOMB_REQUIRE(s.friction.type != FrictionLawType::Tresca || s.friction.threshold > 0.0,
                     where << "Tresca Threshold' must be > 0 with Friction Law = Tresca, got " << s.friction.threshold);

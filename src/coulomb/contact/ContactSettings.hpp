@@ -50,6 +50,11 @@ struct ContactPairSettings {
   double slipAugmentation = 1.0;      ///< alpha of the augmented tangential multiplier of slipping nodes
   int slipResetFrequency = 1;         ///< slipping nodes restart as stick every n steps (0: never)
   SlipMeasure slipMeasure = SlipMeasure::Objective;
+  /// Objective slip only where the operators changed over the step:
+  /// |D - Dᵗ| + sum |M - Mᵗ| > operatorThreshold × (D + sum |M|), else the
+  /// non-objective one (seed: OPERATOR_THRESHOLD). 0: objective whenever the
+  /// operators of the last converged state exist.
+  double operatorThreshold = 0.0;
   bool pureSlip = false;              ///< every active node slides without friction (automatic when mu = 0)
   /// A frictional pair: a law with a tangential threshold, not in pure slip.
   bool frictional() const { return !pureSlip && !friction.pureSlip(); }
