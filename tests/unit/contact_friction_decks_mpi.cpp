@@ -90,6 +90,40 @@ TEST(FrictionPatch, StickBelowTheConeIsExact) {
   EXPECT_EQ(lastGlobal(run.results, "contact_stick_nodes_punch"), 8.0);
 }
 
+// The same stick patch on matching meshes (4 punch faces on 4 base faces).
+TEST(FrictionPatch, StickIsExactOnMatchingMeshes) {
+  std::string text = stickPatchDeck();
+  const std::string from = shippedMesh("contact_patch2d.e"), to = shippedMesh("contact_patch2d_matching.e");
+  text.replace(text.find(from), from.size(), to);
+  auto run = runDeckText("friction_patch_stick_matching", text);
+  EXPECT_LT(homogeneousFieldError(*run.simulation, kMu * kPressure / 2, 0.0), 1e-9 * 0.01);
+  if (worldComm()->getRank() != 0) return;
+  const double tau = kMu * kPressure / 2, stretch = 1 + kEpsXX;
+  const auto nodes = checkTractions(run.results, [&](double) { return -tau / stretch; }, 1e-8 * kPressure);
+  EXPECT_EQ(nodes.stick, 5);
+}
+
+// Coulomb with mu = 0 and Pure Slip run frictionless sliding: the Hertz 2D
+// result equals the frictionless one.
+TEST(FrictionPatch, ZeroFrictionAndPureSlipAreFrictionless) {
+  const std::string alm = "<Parameter name=\"Formulation\" type=\"string\" value=\"ALM\"/>";
+  ShippedDeck zero("hertz2d", "hertz2d.e"), pure("hertz2d", "hertz2d.e");
+  zero.replace(alm, alm + "<Parameter name=\"Friction Law\" type=\"string\" value=\"Coulomb\"/><Parameter "
+                          "name=\"Friction Coefficient\" type=\"double\" value=\"0\"/>");
+  pure.replace(alm, alm + "<Parameter name=\"Friction Law\" type=\"string\" value=\"Coulomb\"/><Parameter "
+                          "name=\"Friction Coefficient\" type=\"double\" value=\"0.5\"/><Parameter name=\"Pure "
+                          "Slip\" type=\"bool\" value=\"true\"/>");
+  auto frictionless = runDeck("hertz2d");
+  auto mu0 = runDeckText("friction_zero_mu", zero.text);
+  auto slip = runDeckText("friction_pure_slip", pure.text);
+  if (worldComm()->getRank() != 0) return;
+  const double reference = lastGlobal(frictionless.results, "reaction_top_y");
+  EXPECT_NEAR(lastGlobal(mu0.results, "reaction_top_y"), reference, 1e-9 * std::abs(reference));
+  EXPECT_NEAR(lastGlobal(slip.results, "reaction_top_y"), reference, 1e-9 * std::abs(reference));
+  EXPECT_NEAR(lastGlobal(slip.results, "contact_force_cylinder_x"), lastGlobal(frictionless.results, "contact_force_cylinder_x"),
+              1e-9 * std::abs(reference));
+}
+
 // Imposed slip: the punch is dragged by s over the base; every slave node
 // slips and carries exactly mu p against the slip (the ratio per node and in
 // total; the overlap of the shifted punch ends differs from the homogeneous
