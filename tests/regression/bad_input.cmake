@@ -67,4 +67,5 @@ coulomb_bad_input(contact_friction_tresca_zero_threshold "'Contact/Pairs/punch/T
 coulomb_bad_input(contact_friction_unknown_law "'Contact/Pairs/punch/Friction Law'")
 coulomb_bad_input(contact_friction_zero_tangent_factor "'Contact/Pairs/punch/Tangent Factor'")
 coulomb_bad_input(dirichlet_rotation_with_value "'Dirichlet Conditions/turn/Rotation Angle'.*no 'Value'")
+coulomb_bad_input(contact_friction_missing_field "'Contact/Pairs/punch/Friction Coefficient Field'.*no nodal variable 'mu'")
 coulomb_bad_input(contact_penetration_beyond_search_radius "Contact/Pairs/punch: slave node [0-9]+ penetrates the master by .*search radius")

@@ -11,6 +11,8 @@
 
 #include "ContactTestSupport.hpp"
 #include "TestSupport.hpp"
+#include "coulomb/io/ExodusReader.hpp"
+#include "coulomb/io/ExodusWriter.hpp"
 
 namespace coulomb::test {
 namespace {
@@ -171,6 +173,43 @@ TEST(FrictionPenalty, ImposedSlipAndSlidingPunch) {
   const double Q = std::abs(lastGlobal(r, "reaction_top_x")), P = -lastGlobal(r, "reaction_top_z");
   EXPECT_NEAR(Q / P, kMu, 0.01 * kMu);
   EXPECT_EQ(lastGlobal(r, "contact_stick_nodes_punch"), 0.0);
+}
+
+// Coulomb's mu per node from a nodal variable of the mesh file: the imposed
+// slip carries mu_j p at every node j (0.3 on x < 0.5, 0.15 beyond).
+TEST(FrictionPatch, NodalFrictionCoefficientField) {
+  const std::string dir = scratchDirectory("friction_field");
+  const std::string meshCopy = dir + "/patch_mu.e";
+  if (worldComm()->getRank() == 0) {
+    const mesh::GlobalMesh m = io::readExodus(shippedMesh("contact_patch2d.e"));
+    std::vector<double> mu(static_cast<std::size_t>(m.numNodes()));
+    for (long long n = 0; n < m.numNodes(); ++n) mu[n] = m.coordinates[2 * n] < 0.5 ? 0.3 : 0.15;
+    io::ExodusWriter writer(meshCopy, m, {"mu"}, {}, "patch with a friction coefficient field");
+    writer.writeStep(0.0, {mu}, {});
+    writer.close();
+  }
+  worldComm()->barrier();
+  ShippedDeck deck("friction_patch_2d", "contact_patch2d.e");
+  deck.replace(shippedMesh("contact_patch2d.e"), meshCopy);
+  deck.replace("<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0.3\"/>",
+               "<Parameter name=\"Friction Coefficient Field\" type=\"string\" value=\"mu\"/>");
+  auto run = runDeckText("friction_field_run", deck.text);
+  if (worldComm()->getRank() != 0) return;
+  const auto& coordinates = run.simulation->mesh().global().coordinates;
+  const auto& state = lastNodal(run.results, "contact_state");
+  const auto& pressure = lastNodal(run.results, "contact_pressure");
+  const auto& tx = lastNodal(run.results, "contact_tangential_traction_x");
+  const auto& ty = lastNodal(run.results, "contact_tangential_traction_y");
+  int low = 0, high = 0;
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    if (state[i] < 0.5) continue;
+    ASSERT_LT(state[i], 1.5) << "node " << i + 1 << " sticks";
+    const double mu = coordinates[2 * i] < 0.5 ? 0.3 : 0.15;
+    (mu > 0.2 ? high : low)++;
+    EXPECT_NEAR(std::hypot(tx[i], ty[i]), mu * pressure[i], 1e-8 * kPressure) << "node " << i + 1;
+  }
+  EXPECT_GT(low, 2);
+  EXPECT_GT(high, 2);
 }
 
 // Tresca: the tangential traction of a slipping node is the threshold,

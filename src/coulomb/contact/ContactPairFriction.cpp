@@ -201,6 +201,7 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
     State decided;
     if (entry != nullptr && entry->D > minimumD_) {
       const auto w = weightedSlip(*entry, nullptr);
+      p.law.coefficient = settings_.frictionCoefficient(node);
       decided = decide(dim_, residualAt(node), normals_[s].n, w, entry->D, entry->gap, prescribedOf(node), previous, p);
       weightedSlip_[i] = w;
       for (int c = 0; c < 3; ++c) slipIncrement_[i][c] = -w[c] / entry->D;  // the slave relative to the master
@@ -239,6 +240,7 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
     std::array<DerivativeRow, 3> dw;
     const auto w = weightedSlip(*entry, &dw);
     const auto rf = residualAt(node);
+    p.law.coefficient = settings_.frictionCoefficient(node);
     const Rows k = rowsOf(dim_, rf, n, w, entry->D, entry->gap, prescribedOf(node), state_[i], p);
     if (!k.usable) continue;
 
@@ -398,6 +400,7 @@ PairIterationSummary ContactPair::updatePenaltyFrictional(bool updateSet, Contac
       const auto w = weightedSlip(*entry, nullptr);
       weightedSlip_[i] = w;
       for (int c = 0; c < 3; ++c) slipIncrement_[i][c] = -w[c] / entry->D;
+      p.law.coefficient = settings_.frictionCoefficient(node);
       state = decide(normals_[s].n, w, i, entry->D, entry->gap, previous);
       if (!updateSet) {
         if (state != previous) ++summary.violations;
@@ -430,6 +433,7 @@ PairIterationSummary ContactPair::updatePenaltyFrictional(bool updateSet, Contac
     std::array<DerivativeRow, 3> dw;
     const auto w = weightedSlip(*entry, &dw);
     const double D = entry->D;
+    p.law.coefficient = settings_.frictionCoefficient(node);
     const PenaltyForce f = force(n, w, i, D, entry->gap, state_[i]);
     pressure_[i] = f.pressure;
     lambdaN_[i] = -f.pressure / k_;

@@ -1,11 +1,13 @@
 #include "coulomb/contact/ContactSettings.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "coulomb/core/Error.hpp"
+#include "coulomb/io/ExodusResults.hpp"
 #include "coulomb/io/ParameterValidation.hpp"
 #include "coulomb/io/RangeValidator.hpp"
 
@@ -61,6 +63,9 @@ void addValidContactParameters(ParameterList& valid) {
            "None: frictionless; Coulomb: |t_tau| <= mu p; Tresca: |t_tau| <= Tresca Threshold",
            io::oneOf({"None", "Coulomb", "Tresca"}));
   pair.set("Friction Coefficient", d.friction.coefficient, "Coulomb's mu (0: pure slip)", io::nonNegative());
+  pair.set("Friction Coefficient Field", "",
+           "Coulomb's mu per node: the name of a nodal variable of the mesh file (its last time step), instead of "
+           "Friction Coefficient");
   pair.set("Tresca Threshold", d.friction.threshold,
            "Tresca's limit of the tangential traction [pressure], required (> 0) with Friction Law = Tresca",
            io::nonNegative());
@@ -133,10 +138,15 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
     s.slipMeasure = io::valueOrDefault<std::string>(p, v, "Slip Measure") == "Objective" ? SlipMeasure::Objective
                                                                                       : SlipMeasure::NonObjective;
     s.pureSlip = io::valueOrDefault<bool>(p, v, "Pure Slip");
+    s.frictionCoefficientField = io::valueOrDefault<std::string>(p, v, "Friction Coefficient Field");
     s.operatorThreshold = io::valueOrDefault<double>(p, v, "Operator Threshold");
     const std::string where = "deck: 'Contact/Pairs/" + name + "/";
     COULOMB_REQUIRE(s.friction.type != FrictionLawType::Tresca || s.friction.threshold > 0.0,
                     where << "Tresca Threshold' must be > 0 with Friction Law = Tresca, got " << s.friction.threshold);
+    COULOMB_REQUIRE(s.frictionCoefficientField.empty() || s.friction.type == FrictionLawType::Coulomb,
+                    where << "Friction Coefficient Field' is given but 'Friction Law' is not Coulomb");
+    COULOMB_REQUIRE(s.frictionCoefficientField.empty() || !p.isParameter("Friction Coefficient"),
+                    where << "Friction Coefficient' and 'Friction Coefficient Field' are both given: keep one");
     COULOMB_REQUIRE(s.friction.type == FrictionLawType::Coulomb || !p.isParameter("Friction Coefficient"),
                     where << "Friction Coefficient' is given but 'Friction Law' is not Coulomb");
     COULOMB_REQUIRE(s.friction.type == FrictionLawType::Tresca || !p.isParameter("Tresca Threshold"),
@@ -147,6 +157,24 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
     settings.pairs.push_back(std::move(s));
   }
   return settings;
+}
+
+void loadFrictionFields(ContactSettings& settings, const std::string& meshFile) {
+  for (auto& pair : settings.pairs) {
+    if (pair.frictionCoefficientField.empty()) continue;
+    const std::string where = "deck: 'Contact/Pairs/" + pair.name + "/Friction Coefficient Field': ";
+    const io::ExodusResults results = io::readExodusResults(meshFile);
+    const auto& names = results.nodalNames;
+    const auto it = std::find(names.begin(), names.end(), pair.frictionCoefficientField);
+    COULOMB_REQUIRE(it != names.end() && !results.nodal.empty(),
+                    where << "the mesh '" << meshFile << "' has no nodal variable '" << pair.frictionCoefficientField
+                          << "'");
+    pair.nodalFrictionCoefficients = results.nodal.back()[static_cast<std::size_t>(it - names.begin())];
+    for (std::size_t i = 0; i < pair.nodalFrictionCoefficients.size(); ++i)
+      COULOMB_REQUIRE(pair.nodalFrictionCoefficients[i] >= 0.0,
+                      where << "'" << pair.frictionCoefficientField << "' is negative at node " << i + 1 << " ("
+                            << pair.nodalFrictionCoefficients[i] << ")");
+  }
 }
 
 }  // namespace coulomb::contact

@@ -56,8 +56,20 @@ struct ContactPairSettings {
   /// operators of the last converged state exist.
   double operatorThreshold = 0.0;
   bool pureSlip = false;              ///< every active node slides without friction (automatic when mu = 0)
+  /// Coulomb's mu per node from a nodal variable of the mesh file (deck
+  /// 'Friction Coefficient Field'; loadFrictionFields fills the values,
+  /// indexed by global node); empty: friction.coefficient everywhere.
+  std::string frictionCoefficientField;
+  std::vector<double> nodalFrictionCoefficients;
   /// A frictional pair: a law with a tangential threshold, not in pure slip.
-  bool frictional() const { return !pureSlip && !friction.pureSlip(); }
+  bool frictional() const {
+    return !pureSlip && (!friction.pureSlip() || !frictionCoefficientField.empty());
+  }
+  /// mu of global node `node` (the field's value, else the pair's).
+  double frictionCoefficient(long long node) const {
+    return nodalFrictionCoefficients.empty() ? friction.coefficient
+                                             : nodalFrictionCoefficients[static_cast<std::size_t>(node)];
+  }
 };
 
 /// @brief Everything about contact in a deck.
@@ -79,6 +91,12 @@ void addValidContactParameters(Teuchos::ParameterList& valid);
 
 /// @brief Typed settings of a validated deck (no "Contact" sublist: no pairs).
 ContactSettings parseContactSettings(const Teuchos::ParameterList& deck);
+
+/// @brief Reads the nodal friction coefficients of the pairs that name a
+/// 'Friction Coefficient Field' from the mesh file (last time step of that
+/// nodal variable). Throws coulomb::Error naming the pair, file and variable
+/// when the variable is missing or a value is negative.
+void loadFrictionFields(ContactSettings& settings, const std::string& meshFile);
 
 const char* toString(ContactFormulation formulation);
 

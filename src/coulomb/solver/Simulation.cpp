@@ -72,7 +72,8 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
   mesh_ = std::make_unique<mesh::Mesh>(global, comm_);
   dofs_ = std::make_unique<fem::DofMap>(*mesh_);
   assembler_ = std::make_unique<fem::Assembler>(*mesh_, *dofs_, model);
-  const auto contactSettings = contact::parseContactSettings(*deck);
+  auto contactSettings = contact::parseContactSettings(*deck);
+  contact::loadFrictionFields(contactSettings, settings_.meshFile);
   if (!contactSettings.pairs.empty())
     contact_ = std::make_unique<contact::ContactModel>(*mesh_, dofs_->ownedMap(), contactSettings, model);
 
