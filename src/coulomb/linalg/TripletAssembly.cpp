@@ -207,12 +207,25 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
 
   // The same pattern as the last result (same K, same columns, same rows):
   // new values in place. Every rank must agree (the result is collective).
-  const bool samePattern = !last_.is_null() && lastK_ == &K && columnGids_ == lastColumnGids_ &&
-                           rowPointers_ == lastRowPointers_ && columns_ == lastColumns_;
+  // (Compared against the last result's own graph: no copy of the pattern is kept.)
+  bool samePattern = !last_.is_null() && lastK_ == &K && columnGids_ == lastColumnGids_;
+  if (samePattern) {
+    const auto graph = last_->getLocalMatrixDevice().graph;
+    samePattern = graph.row_map.extent(0) == rowPointers_.size() && graph.entries.extent(0) == columns_.size() &&
+                  std::equal(rowPointers_.begin(), rowPointers_.end(), graph.row_map.data()) &&
+                  std::equal(columns_.begin(), columns_.end(), graph.entries.data());
+  }
+  // The merge buffers are released after each call: they are as large as K,
+  // and the peak memory of a run is reached later, in the linear solve.
+  auto release = [this] {
+    std::vector<LocalOrdinal>().swap(columns_);
+    std::vector<double>().swap(values_);
+  };
   if (!anyRank(*rowMap->getComm(), !samePattern)) {
     auto values = last_->getLocalMatrixDevice().values;
     std::copy(values_.begin(), values_.end(), values.data());
     ++reuses_;
+    release();
     return last_;
   }
 
@@ -245,9 +258,8 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
   last_ = Teuchos::rcp(new CrsMatrix(local, rowMap, columnMap, K.getDomainMap(), K.getRangeMap(), importer,
                                      Teuchos::null));
   lastK_ = &K;
-  lastRowPointers_ = rowPointers_;
-  lastColumns_ = columns_;
   lastColumnGids_ = columnGids_;
+  release();
   return last_;
 }
 

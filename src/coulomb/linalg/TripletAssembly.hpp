@@ -44,11 +44,10 @@ Teuchos::RCP<CrsMatrix> matrixFromTriplets(const std::vector<MatrixTriplet>& tri
 /// several times more on the size of K.
 Teuchos::RCP<CrsMatrix> addTriplets(const CrsMatrix& K, const std::vector<MatrixTriplet>& triplets);
 
-/// @brief addTriplets for a Newton loop: the merge buffers are kept between
-/// calls, and when K + S has the pattern of the previous result (same
-/// column map, same rows), that matrix gets the new values in place and is
-/// returned again. Measured on hertz3d_r1.5 (22k DoFs): fresh buffers and
-/// matrices cost ~110 ms per call, mostly first-touch page faults.
+/// @brief addTriplets for a Newton loop: when K + S has the pattern of the
+/// previous result (same column map, same rows), that matrix gets the new
+/// values in place and is returned again, instead of a fresh matrix (whose
+/// allocation costs mostly first-touch page faults on this machine).
 /// The result of a call is overwritten by the next call with the same
 /// pattern: callers must not keep it across calls.
 class MatrixSum {
@@ -65,8 +64,6 @@ private:
   std::vector<GlobalOrdinal> columnGids_;
   Teuchos::RCP<CrsMatrix> last_;
   const CrsMatrix* lastK_ = nullptr;
-  std::vector<std::size_t> lastRowPointers_;
-  std::vector<LocalOrdinal> lastColumns_;
   std::vector<GlobalOrdinal> lastColumnGids_;
   int reuses_ = 0;
 };
