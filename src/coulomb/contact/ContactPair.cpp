@@ -167,6 +167,15 @@ void ContactPair::restoreStep() {
   searched_ = false;
 }
 
+std::string ContactPair::penetrationFailure(long long node, double gap, double D) const {
+  if (gap / D >= -radius_) return "";
+  std::ostringstream message;
+  message << "Contact/Pairs/" << settings_.name << ": slave node " << node + 1 << " penetrates the master by "
+          << -gap / D << ", more than the search radius " << radius_
+          << ": raise 'Search Radius Factor' or use more load steps";
+  return message.str();
+}
+
 bool ContactPair::isPrescribed(long long node, int c) const {
   const int i = interface_->interfaceNodeIndex(node);
   return i >= 0 && prescribed_[i][c];
@@ -248,11 +257,7 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
   const bool alm = settings_.formulation == ContactFormulation::ALM;
   const auto r = bulkResidual.getData(0);
   const auto& map = *dofMap_;
-  auto row = [this](long long node, int c) { return static_cast<GlobalOrdinal>(dim_ * node + c); };
-  auto isPrescribed = [this](long long node, int c) {
-    const int i = interface_->interfaceNodeIndex(node);
-    return i >= 0 && prescribed_[i][c];
-  };
+  auto row = [this](long long node, int c) { return dofRow(node, c); };
   PairIterationSummary summary;
   std::string failure;
   const auto& slaveNodes = interface_->slaveNodes();
@@ -302,13 +307,7 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
     if (state == ContactState::Active) ++summary.activeSet.active;
     else ++summary.activeSet.inactive;
     if (state != previous) ++summary.activeSet.changed;
-    if (state == ContactState::Active && gap / D < -radius_ && failure.empty()) {
-      std::ostringstream message;
-      message << "Contact/Pairs/" << settings_.name << ": slave node " << node + 1 << " penetrates the master by "
-              << -gap / D << ", more than the search radius " << radius_
-              << ": raise 'Search Radius Factor' or use more load steps";
-      failure = message.str();
-    }
+    if (state == ContactState::Active && failure.empty()) failure = penetrationFailure(node, gap, D);
     if (alm) {
       lambdaN_[i] = lambdaN;
       pressure_[i] = -k_ * lambdaN;

@@ -30,6 +30,7 @@
 #include "coulomb/contact/ContactInterface.hpp"
 #include "coulomb/contact/ContactSearch.hpp"
 #include "coulomb/contact/ContactSettings.hpp"
+#include "coulomb/contact/FrictionalNode.hpp"
 #include "coulomb/contact/MortarPass.hpp"
 #include "coulomb/core/TpetraTypes.hpp"
 #include "coulomb/fem/ModelSettings.hpp"
@@ -128,6 +129,10 @@ private:
   /// Weighted slip w_j of the step (seed sign) and, when `derivative` is
   /// given, dw_c / dx as three rows.
   std::array<double, 3> weightedSlip(const NodalMortarEntry& entry, std::array<DerivativeRow, 3>* derivative) const;
+  /// The message when an active node penetrates deeper than the search radius, else "".
+  std::string penetrationFailure(long long node, double gap, double D) const;
+  /// The kernel parameters of a frictional pair.
+  FrictionalParameters frictionalParameters() const;
   /// Sums the summary over ranks.
   void reduceSummary(PairIterationSummary& summary) const;
   GlobalOrdinal dofRow(long long node, int c) const { return static_cast<GlobalOrdinal>(dim_ * node + c); }

@@ -95,6 +95,18 @@ void addScaled(DerivativeRow& to, const DerivativeRow& from, double scale) {
 
 }  // namespace
 
+FrictionalParameters ContactPair::frictionalParameters() const {
+  FrictionalParameters p;
+  p.k = k_;
+  p.epsN = epsN_;
+  p.epsTau = settings_.tangentFactor * epsN_;
+  p.thickness = thickness_;
+  p.slipAugmentation = settings_.slipAugmentation;
+  p.slipThreshold = settings_.slipThreshold;
+  p.law = settings_.friction;
+  return p;
+}
+
 std::array<double, 3> ContactPair::weightedSlip(const NodalMortarEntry& entry,
                                                 std::array<DerivativeRow, 3>* derivative) const {
   // Objective (4.69b): w = (D - D^t) x_j - sum_l (M_jl - M^t_jl) x_l.
@@ -172,14 +184,7 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
   const auto& slaveNodes = interface_->slaveNodes();
   const auto& owned = interface_->ownedSlaveNodes();
   const double t = thickness_;
-  FrictionalParameters p;
-  p.k = k_;
-  p.epsN = epsN_;
-  p.epsTau = settings_.tangentFactor * epsN_;
-  p.thickness = t;
-  p.slipAugmentation = settings_.slipAugmentation;
-  p.slipThreshold = settings_.slipThreshold;
-  p.law = settings_.friction;
+  FrictionalParameters p = frictionalParameters();
 
   auto residualAt = [&](long long node) {
     std::array<double, 3> values{};
@@ -211,13 +216,7 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
         state = previous;
       }
       if (state == ContactState::Inactive) decided = State{};
-      if (isActive(state) && entry->gap / entry->D < -radius_ && failure.empty()) {
-        std::ostringstream message;
-        message << "Contact/Pairs/" << settings_.name << ": slave node " << node + 1 << " penetrates the master by "
-                << -entry->gap / entry->D << ", more than the search radius " << radius_
-                << ": raise 'Search Radius Factor' or use more load steps";
-        failure = message.str();
-      }
+      if (isActive(state) && failure.empty()) failure = penetrationFailure(node, entry->gap, entry->D);
     }
     state_[i] = state;
     lambdaN_[i] = decided.lambdaN;
@@ -367,14 +366,7 @@ PenaltyForce widenPenalty(const PenaltyFrictionalForce<dim>& k) {
 PairIterationSummary ContactPair::updatePenaltyFrictional(bool updateSet, ContactContributions& out) {
   const auto& slaveNodes = interface_->slaveNodes();
   const auto& owned = interface_->ownedSlaveNodes();
-  FrictionalParameters p;
-  p.k = k_;
-  p.epsN = epsN_;
-  p.epsTau = settings_.tangentFactor * epsN_;
-  p.thickness = thickness_;
-  p.slipAugmentation = settings_.slipAugmentation;
-  p.slipThreshold = settings_.slipThreshold;
-  p.law = settings_.friction;
+  FrictionalParameters p = frictionalParameters();
   auto decide = [&](const std::array<double, 3>& n, const std::array<double, 3>& w, std::size_t i, double D,
                     double gap, ContactState previous) {
     return dim_ == 2 ? penaltyFrictionalState<2>(penaltyInput<2>(n, w, stepStartTraction_[i], D, gap), previous, p)
@@ -406,13 +398,7 @@ PairIterationSummary ContactPair::updatePenaltyFrictional(bool updateSet, Contac
         if (state != previous) ++summary.violations;
         state = previous;
       }
-      if (isActive(state) && entry->gap / entry->D < -radius_ && failure.empty()) {
-        std::ostringstream message;
-        message << "Contact/Pairs/" << settings_.name << ": slave node " << node + 1 << " penetrates the master by "
-                << -entry->gap / entry->D << ", more than the search radius " << radius_
-                << ": raise 'Search Radius Factor' or use more load steps";
-        failure = message.str();
-      }
+      if (isActive(state) && failure.empty()) failure = penetrationFailure(node, entry->gap, entry->D);
     }
     state_[i] = state;
     if (!isActive(state)) traction_[i] = {0.0, 0.0, 0.0}, lambdaN_[i] = pressure_[i] = 0.0;
