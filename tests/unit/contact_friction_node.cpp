@@ -104,8 +104,9 @@ TEST(FrictionLaw, StickSlipRuleWithHysteresis) {
   // A slipping node keeps slipping down to (1 - 0.02) x 10 = 9.8.
   EXPECT_EQ(stickSlipState(9.9, threshold, kSlip, hysteresis), kSlip);
   EXPECT_EQ(stickSlipState(9.7, threshold, kSlip, hysteresis), ContactState::Stick);
-  // Zero threshold: always slip (pure slip).
-  EXPECT_EQ(stickSlipState(0.0, 0.0, ContactState::Stick, hysteresis), kSlip);
+  // Zero threshold (no pressure yet): any tangential load slips, none sticks.
+  EXPECT_EQ(stickSlipState(1e-12, 0.0, ContactState::Stick, hysteresis), kSlip);
+  EXPECT_EQ(stickSlipState(0.0, 0.0, ContactState::Stick, hysteresis), ContactState::Stick);
   EXPECT_TRUE(isActive(ContactState::Stick));
   EXPECT_TRUE(isActive(kSlip));
   EXPECT_FALSE(isActive(ContactState::Inactive));

@@ -37,7 +37,6 @@ ContactState penaltyContactState(double weightedGap) {
 }
 
 ContactState stickSlipState(double tangentNorm, double threshold, ContactState previous, double slipThreshold) {
-  if (threshold <= 0.0) return kSlip;
   const double limit = previous == kSlip ? (1.0 - slipThreshold) * threshold : threshold;
   return tangentNorm > limit ? kSlip : ContactState::Stick;
 }

@@ -61,8 +61,9 @@ ContactState penaltyContactState(double weightedGap);
 /// (traction), `threshold` = the friction law's threshold (traction, >= 0).
 /// A node that slipped at the previous iterate keeps slipping while
 /// tangentNorm > (1 - slipThreshold) × threshold; any other node slips when
-/// tangentNorm > threshold. A zero threshold (frictionless, mu = 0) always
-/// slips. Returns Active (= slip) or Stick.
+/// tangentNorm > threshold (strictly: with a zero threshold, e.g. a node
+/// that closes without pressure yet, any tangential load slips and none
+/// sticks). Returns Active (= slip) or Stick.
 ContactState stickSlipState(double tangentNorm, double threshold, ContactState previous, double slipThreshold);
 
 /// @brief Per-interface summary of an active set.

@@ -109,11 +109,13 @@ FrictionalNodeState<dim> frictionalState(const FrictionalNodeInput<dim>& in, Con
   std::array<double, dim> direction{};
   out.tangentNorm = augmentedTangent<dim, double>(terms, in.D, previous == kSlip ? p.slipAugmentation : 1.0, p,
                                                   direction);
-  // A node that just closed has no recovered traction and, under Coulomb,
-  // a threshold from the penetration alone (often zero): it starts in the
-  // stick guess (Algorithm 3, line 6) and the next iterate decides.
-  out.state = isActive(previous) ? stickSlipState(out.tangentNorm, out.threshold, previous, p.slipThreshold)
-                                 : ContactState::Stick;
+  // A node that just closed has no recovered traction (lambda = 0): it is
+  // judged on its augmented values alone, from the stick side (no
+  // hysteresis). Forcing it to stick instead ties a node that closes inside
+  // a sliding zone to the master for an iterate; the tie pulls it open again
+  // and the set cycles (seen on the coarse ironing deck).
+  out.state = stickSlipState(out.tangentNorm, out.threshold, isActive(previous) ? previous : ContactState::Stick,
+                             p.slipThreshold);
   return out;
 }
 

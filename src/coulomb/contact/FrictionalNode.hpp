@@ -77,8 +77,8 @@ struct FrictionalNodeState {
 /// @brief The update rule (4.73-4.77) for node `in` whose state at the
 /// previous iterate was `previous`. The multiplier is recovered from the
 /// residual only when `previous` is active (otherwise the node's rows held
-/// plain equilibrium and lambda = 0); a node that closes starts as Stick
-/// (the stick guess of Algorithm 3). A node whose free components hardly
+/// plain equilibrium and lambda = 0; it is then judged from the stick side).
+/// A node whose free components hardly
 /// see its normal (CondensationFrame::usable false) stays Inactive.
 template <int dim>
 FrictionalNodeState<dim> frictionalState(const FrictionalNodeInput<dim>& in, ContactState previous,
