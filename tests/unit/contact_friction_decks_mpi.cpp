@@ -300,12 +300,20 @@ RotationChange changeUnderRotation(const ContactRun& run) {
   auto nodal = [&r](std::size_t s, const char* name) { return r.nodal[s][r.nodalIndex(name)]; };
   RotationChange c;
   const auto state0 = nodal(pressed, "contact_state"), state1 = nodal(turned, "contact_state");
-  c.sameStates = state0 == state1;
   const auto p0 = nodal(pressed, "contact_pressure"), p1 = nodal(turned, "contact_pressure");
   const auto tx0 = nodal(pressed, "contact_tangential_traction_x"), ty0 = nodal(pressed, "contact_tangential_traction_y");
   const auto tx1 = nodal(turned, "contact_tangential_traction_x"), ty1 = nodal(turned, "contact_tangential_traction_y");
   const auto sx0 = nodal(pressed, "contact_slip_x"), sy0 = nodal(pressed, "contact_slip_y");
   const auto sx1 = nodal(turned, "contact_slip_x"), sy1 = nodal(turned, "contact_slip_y");
+  // The same states, except that a node exactly on the cone (|t| = mu p: it
+  // slipped while pressed and restarts each step as stick) may carry either
+  // label: stick and slip coincide there.
+  c.sameStates = true;
+  for (std::size_t i = 0; i < state0.size(); ++i) {
+    if (state0[i] == state1[i]) continue;
+    const bool onCone = std::abs(std::hypot(tx1[i], ty1[i]) - kMu * p1[i]) <= 1e-6 * kMu * p1[i];
+    c.sameStates = c.sameStates && state0[i] > 0.5 && state1[i] > 0.5 && onCone;
+  }
   for (std::size_t i = 0; i < state0.size(); ++i) {
     if (state0[i] < 0.5) continue;
     c.peakPressure = std::max(c.peakPressure, p0[i]);

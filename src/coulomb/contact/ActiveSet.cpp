@@ -37,7 +37,12 @@ ContactState penaltyContactState(double weightedGap) {
 }
 
 ContactState stickSlipState(double tangentNorm, double threshold, ContactState previous, double slipThreshold) {
-  const double limit = previous == kSlip ? (1.0 - slipThreshold) * threshold : threshold;
+  // A sticking node exactly on the cone (|lambdā_tau| = Θ to round-off: e.g.
+  // a node that slipped in the last step, restarted as stick, and is carried
+  // rigidly) stays stick: the decision must not depend on the last bits,
+  // which differ with the rank count.
+  constexpr double kRoundOff = 1e-10;
+  const double limit = previous == kSlip ? (1.0 - slipThreshold) * threshold : threshold * (1.0 + kRoundOff);
   return tangentNorm > limit ? kSlip : ContactState::Stick;
 }
 

@@ -61,9 +61,9 @@ ContactState penaltyContactState(double weightedGap);
 /// (traction), `threshold` = the friction law's threshold (traction, >= 0).
 /// A node that slipped at the previous iterate keeps slipping while
 /// tangentNorm > (1 - slipThreshold) × threshold; any other node slips when
-/// tangentNorm > threshold (strictly: with a zero threshold, e.g. a node
-/// that closes without pressure yet, any tangential load slips and none
-/// sticks). Returns Active (= slip) or Stick.
+/// tangentNorm > threshold (1 + 1e-10): a node on the cone to round-off
+/// stays stick, so that the rank count cannot decide; with a zero threshold
+/// any tangential load slips. Returns Active (= slip) or Stick.
 ContactState stickSlipState(double tangentNorm, double threshold, ContactState previous, double slipThreshold);
 
 /// @brief Per-interface summary of an active set.

@@ -127,6 +127,7 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
   pressure_.assign(owned, 0.0);
   traction_.assign(owned, {0.0, 0.0, 0.0});
   weightedSlip_ = slipIncrement_ = accumulatedSlip_ = stepStartAccumulatedSlip_ = stepStartTraction_ = traction_;
+  openedInStep_.assign(owned, 0);
   beginStep();
 }
 
@@ -144,6 +145,7 @@ void ContactPair::beginStep() {
   }
   stepStartAccumulatedSlip_ = accumulatedSlip_;
   stepStartTraction_ = traction_;
+  std::fill(openedInStep_.begin(), openedInStep_.end(), 0);
   // Slip reset policy: slipping nodes start the step as stick every n-th step.
   const int n = settings_.slipResetFrequency;
   if (frictional() && n > 0 && steps_ % n == 0)
@@ -163,6 +165,7 @@ void ContactPair::restoreStep() {
   mortar_ = stepStartMortar_;
   x_ = stepStartX_;
   traction_ = stepStartTraction_;
+  std::fill(openedInStep_.begin(), openedInStep_.end(), 0);
   --steps_;
   searched_ = false;
 }

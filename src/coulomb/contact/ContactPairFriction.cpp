@@ -25,8 +25,9 @@ namespace {
 template <int dim>
 FrictionalNodeInput<dim> narrow(const std::array<double, 3>& r, const std::array<double, 3>& n,
                                 const std::array<double, 3>& w, double D, double gap,
-                                const std::array<bool, 3>& prescribed) {
+                                const std::array<bool, 3>& prescribed, bool reclosing = false) {
   FrictionalNodeInput<dim> in;
+  in.reclosing = reclosing;
   for (int c = 0; c < dim; ++c) {
     in.residual[c] = r[c];
     in.normal[c] = n[c];
@@ -68,7 +69,7 @@ Rows widenRows(const FrictionalNodeRows<dim>& k) {
 }
 
 State decide(int dim, const std::array<double, 3>& r, const std::array<double, 3>& n, const std::array<double, 3>& w,
-             double D, double gap, const std::array<bool, 3>& prescribed, ContactState previous,
+             double D, double gap, const std::array<bool, 3>& prescribed, ContactState previous, bool reclosing,
              const FrictionalParameters& p) {
   State out;
   auto copy = [&out](const auto& s, int d) {
@@ -76,8 +77,8 @@ State decide(int dim, const std::array<double, 3>& r, const std::array<double, 3
     out.lambdaN = s.lambdaN;
     for (int c = 0; c < d; ++c) out.traction[c] = s.traction[c];
   };
-  if (dim == 2) copy(frictionalState<2>(narrow<2>(r, n, w, D, gap, prescribed), previous, p), 2);
-  else copy(frictionalState<3>(narrow<3>(r, n, w, D, gap, prescribed), previous, p), 3);
+  if (dim == 2) copy(frictionalState<2>(narrow<2>(r, n, w, D, gap, prescribed, reclosing), previous, p), 2);
+  else copy(frictionalState<3>(narrow<3>(r, n, w, D, gap, prescribed, reclosing), previous, p), 3);
   return out;
 }
 
@@ -207,7 +208,8 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
     if (entry != nullptr && entry->D > minimumD_) {
       const auto w = weightedSlip(*entry, nullptr);
       p.law.coefficient = settings_.frictionCoefficient(node);
-      decided = decide(dim_, residualAt(node), normals_[s].n, w, entry->D, entry->gap, prescribedOf(node), previous, p);
+      decided = decide(dim_, residualAt(node), normals_[s].n, w, entry->D, entry->gap, prescribedOf(node), previous,
+                       openedInStep_[i] != 0, p);
       weightedSlip_[i] = w;
       for (int c = 0; c < 3; ++c) slipIncrement_[i][c] = -w[c] / entry->D;  // the slave relative to the master
       state = decided.state;
@@ -218,6 +220,7 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
       if (state == ContactState::Inactive) decided = State{};
       if (isActive(state) && failure.empty()) failure = penetrationFailure(node, entry->gap, entry->D);
     }
+    if (isActive(previous) && !isActive(state)) openedInStep_[i] = 1;
     state_[i] = state;
     lambdaN_[i] = decided.lambdaN;
     pressure_[i] = -k_ * decided.lambdaN;

@@ -109,13 +109,15 @@ FrictionalNodeState<dim> frictionalState(const FrictionalNodeInput<dim>& in, Con
   std::array<double, dim> direction{};
   out.tangentNorm = augmentedTangent<dim, double>(terms, in.D, previous == kSlip ? p.slipAugmentation : 1.0, p,
                                                   direction);
-  // A node that just closed has no recovered traction (lambda = 0): it is
-  // judged on its augmented values alone, from the stick side (no
-  // hysteresis). Forcing it to stick instead ties a node that closes inside
-  // a sliding zone to the master for an iterate; the tie pulls it open again
-  // and the set cycles (seen on the coarse ironing deck).
-  out.state = stickSlipState(out.tangentNorm, out.threshold, isActive(previous) ? previous : ContactState::Stick,
-                             p.slipThreshold);
+  // A node that just closed has no recovered traction: the stick guess
+  // (Algorithm 3, line 6), deterministic whatever the round-off of its tiny
+  // first threshold; one that closes again within the step is judged on its
+  // augmented values (lambda = 0), from the stick side.
+  if (isActive(previous))
+    out.state = stickSlipState(out.tangentNorm, out.threshold, previous, p.slipThreshold);
+  else
+    out.state = in.reclosing ? stickSlipState(out.tangentNorm, out.threshold, ContactState::Stick, p.slipThreshold)
+                             : ContactState::Stick;
   return out;
 }
 

@@ -61,6 +61,11 @@ struct FrictionalNodeInput {
   double D = 0.0;                      ///< D_j > 0
   double gap = 0.0;                    ///< weighted gap g~_j
   std::array<bool, dim> prescribed{};  ///< Dirichlet components of the node
+  /// The node opened earlier in this step: when it closes again it is judged
+  /// on its augmented values instead of starting as stick (a closing node
+  /// forced to stick inside a sliding zone can be pulled open by the tie and
+  /// cycle between the two states).
+  bool reclosing = false;
 };
 
 /// @brief The nodal quantities of the state decision and the output.
@@ -77,7 +82,9 @@ struct FrictionalNodeState {
 /// @brief The update rule (4.73-4.77) for node `in` whose state at the
 /// previous iterate was `previous`. The multiplier is recovered from the
 /// residual only when `previous` is active (otherwise the node's rows held
-/// plain equilibrium and lambda = 0; it is then judged from the stick side).
+/// plain equilibrium and lambda = 0); a node that closes starts as Stick (the
+/// stick guess of Algorithm 3), one that closes again within the step
+/// (`reclosing`) is judged on its augmented values from the stick side.
 /// A node whose free components hardly
 /// see its normal (CondensationFrame::usable false) stays Inactive.
 template <int dim>
