@@ -20,7 +20,8 @@ const char* toString(ContactFormulation formulation) {
 }
 
 void addValidContactParameters(ParameterList& valid) {
-  ParameterList& contact = valid.sublist("Contact", false, "Frictionless mortar contact (docs/deck.md, 'Contact')");
+  ParameterList& contact =
+      valid.sublist("Contact", false, "Dual mortar contact, frictionless or with friction (docs/deck.md, 'Contact')");
   const ContactSettings defaults;
   contact.set("Normal Relative Tolerance", defaults.normalRelativeTolerance,
               "converged when ||eps_n g~|| (active nodes) <= this x ||contact forces|| + the absolute tolerance",
