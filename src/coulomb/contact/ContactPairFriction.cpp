@@ -221,6 +221,7 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
       if (isActive(state) && failure.empty()) failure = penetrationFailure(node, entry->gap, entry->D);
     }
     if (isActive(previous) && !isActive(state)) openedInStep_[i] = 1;
+    if (!isActive(state)) weightedSlip_[i] = slipIncrement_[i] = {0.0, 0.0, 0.0};  // an open node does not slip
     state_[i] = state;
     lambdaN_[i] = decided.lambdaN;
     pressure_[i] = -k_ * decided.lambdaN;
@@ -404,7 +405,10 @@ PairIterationSummary ContactPair::updatePenaltyFrictional(bool updateSet, Contac
       if (isActive(state) && failure.empty()) failure = penetrationFailure(node, entry->gap, entry->D);
     }
     state_[i] = state;
-    if (!isActive(state)) traction_[i] = {0.0, 0.0, 0.0}, lambdaN_[i] = pressure_[i] = 0.0;
+    if (!isActive(state)) {
+      traction_[i] = weightedSlip_[i] = slipIncrement_[i] = {0.0, 0.0, 0.0};  // an open node does not slip
+      lambdaN_[i] = pressure_[i] = 0.0;
+    }
     countState(summary.activeSet, state, previous);
   }
   throwIfAnyRankFailed(*interface_->comm(), failure);
