@@ -321,6 +321,17 @@ def analyze_files(result, log=None, deck=None, mu=None, ux=UX, sym_factor=SYM_FA
     return out
 
 
+def print_keys(out):
+    """One JSON line, floats to 6 significant digits."""
+    def rounded(v):
+        if isinstance(v, float):
+            return float(f"{v:.6g}")
+        if isinstance(v, list):
+            return [rounded(x) for x in v]
+        return v
+    print(json.dumps({k: rounded(v) for k, v in out.items()}))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("result")
@@ -328,15 +339,7 @@ def main():
     ap.add_argument("--deck", help="the deck that was run (load functions, friction coefficient)")
     ap.add_argument("--mu", type=float, help=f"friction coefficient when the deck has none (default {MU})")
     a = ap.parse_args()
-    out = analyze_files(a.result, a.log, a.deck, a.mu)
-
-    def rnd(v):
-        if isinstance(v, float):
-            return float(f"{v:.6g}")
-        if isinstance(v, list):
-            return [rnd(x) for x in v]
-        return v
-    print(json.dumps({k: rnd(v) for k, v in out.items()}))
+    print_keys(analyze_files(a.result, a.log, a.deck, a.mu))
     return 0
 
 

@@ -36,7 +36,6 @@ Extras of the ironing case:
 Needs numpy and netCDF4: run with /usr/bin/python3 (Debian python3-netcdf4).
 """
 import argparse
-import json
 import os
 import sys
 import xml.etree.ElementTree as ET
@@ -140,15 +139,7 @@ def main():
     ap.add_argument("--deck", default=DECK, help="the deck that was run (load functions, friction coefficient, "
                                                  "slide; default tests/performance/ironing_hertz3d.xml)")
     a = ap.parse_args()
-    out = analyze_files(a.result, a.log, a.deck)
-
-    def rnd(v):
-        if isinstance(v, float):
-            return float(f"{v:.6g}")
-        if isinstance(v, list):
-            return [rnd(x) for x in v]
-        return v
-    print(json.dumps({k: rnd(v) for k, v in out.items()}))
+    friction_post.print_keys(analyze_files(a.result, a.log, a.deck))
     return 0
 
 

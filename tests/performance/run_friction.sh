@@ -66,15 +66,10 @@ if [ "$quick" = 0 ]; then
 fi
 
 echo
-printf '%s\n' "${lines[@]}" | /usr/bin/python3 -c '
-import json, sys
-rows = []
-for l in sys.stdin:
-    try: rows.append(json.loads(l))
-    except ValueError: pass
-def ccx(r, key):
-    c = r.get("calculix") or {}
-    return c.get(key)
+printf '%s\n' "${lines[@]}" | PYTHONPATH="$here/tests/performance" /usr/bin/python3 -c '
+import sys
+from bench_table import ccx, print_table, read_rows
+rows = read_rows(sys.stdin)
 def slip(r):
     s, a = r.get("slipping_slave_nodes_end"), r.get("active_slave_nodes_end")
     return None if s is None and a is None else f"{s if s is not None else chr(45)}/{a if a is not None else chr(45)}"
@@ -100,19 +95,6 @@ cols = [("ref", lambda r: r.get("ref"), "{}"), ("np", lambda r: r.get("np"), "{}
         ("ccx P end", lambda r: ccx(r, "P_end"), "{:.1f}"),
         ("ccx Q/P end", lambda r: ccx(r, "Q_over_P_end"), "{:.4f}"),
         ("ccx gross slip ux", lambda r: ccx(r, "gross_slip_from_ux"), "{:.4g}")]
-def cell(r, get, fmt, name):
-    v = get(r)
-    if v is None: return "-"
-    try: s = fmt.format(v)
-    except (ValueError, TypeError): s = str(v)
-    if name == "wall s" and r.get("disturbed"): s += "*"
-    if name == "ccx wall s" and ccx(r, "status") not in (None, "ok"): s += " (" + str(ccx(r, "status")) + ")"
-    return s
-table = [[c[0] for c in cols]] + [[cell(r, g, f, n) for n, g, f in cols] for r in rows]
-w = [max(len(t[i]) for t in table) for i in range(len(cols))]
-print("friction (sliding punch), * = disturbed: other processes used > max(0.3 s, 10 % of the wall time) of CPU")
-for j, t in enumerate(table):
-    print("  ".join(s.rjust(w[i]) for i, s in enumerate(t)))
-    if j == 0: print("  ".join("-" * x for x in w))
+print_table(rows, cols, "friction (sliding punch), ")
 '
 exit "$failed"

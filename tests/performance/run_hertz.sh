@@ -65,15 +65,10 @@ else
 fi
 
 echo
-printf '%s\n' "${lines[@]}" | /usr/bin/python3 -c '
-import json, sys
-rows = []
-for l in sys.stdin:
-    try: rows.append(json.loads(l))
-    except ValueError: pass
-def ccx(r, key):
-    c = r.get("calculix") or {}
-    return c.get(key)
+printf '%s\n' "${lines[@]}" | PYTHONPATH="$here/tests/performance" /usr/bin/python3 -c '
+import sys
+from bench_table import ccx, print_table, read_rows
+rows = read_rows(sys.stdin)
 cols = [("case", lambda r: r.get("case"), "{}"), ("ref", lambda r: r.get("ref"), "{}"),
         ("np", lambda r: r.get("np"), "{}"), ("status", lambda r: r.get("status"), "{}"),
         ("dofs", lambda r: r.get("dofs"), "{}"), ("Newton", lambda r: r.get("newton_iterations"), "{}"),
@@ -92,19 +87,6 @@ cols = [("case", lambda r: r.get("case"), "{}"), ("ref", lambda r: r.get("ref"),
         ("ccx/coulomb time", lambda r: r.get("time_ratio_calculix_over_coulomb"), "{:.2f}"),
         ("ccx p0 fit err", lambda r: ccx(r, "p0_fit_rel_err"), "{:+.1%}"),
         ("ccx a fit err", lambda r: ccx(r, "a_fit_rel_err"), "{:+.1%}")]
-def cell(r, get, fmt, name):
-    v = get(r)
-    if v is None: return "-"
-    try: s = fmt.format(v)
-    except (ValueError, TypeError): s = str(v)
-    if name == "wall s" and r.get("disturbed"): s += "*"
-    if name == "ccx wall s" and ccx(r, "status") not in (None, "ok"): s += " (" + str(ccx(r, "status")) + ")"
-    return s
-table = [[c[0] for c in cols]] + [[cell(r, g, f, n) for n, g, f in cols] for r in rows]
-w = [max(len(t[i]) for t in table) for i in range(len(cols))]
-print("* = disturbed: other processes used > max(0.3 s, 10 % of the wall time) of CPU")
-for j, t in enumerate(table):
-    print("  ".join(s.rjust(w[i]) for i, s in enumerate(t)))
-    if j == 0: print("  ".join("-" * x for x in w))
+print_table(rows, cols, "")
 '
 exit "$failed"

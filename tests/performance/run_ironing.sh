@@ -51,12 +51,10 @@ if [ "$quick" = 0 ]; then
 fi
 
 echo
-printf '%s\n' "${lines[@]}" | /usr/bin/python3 -c '
-import json, sys
-rows = []
-for l in sys.stdin:
-    try: rows.append(json.loads(l))
-    except ValueError: pass
+printf '%s\n' "${lines[@]}" | PYTHONPATH="$here/tests/performance" /usr/bin/python3 -c '
+import sys
+from bench_table import ccx, print_table, read_rows
+rows = read_rows(sys.stdin)
 def stick_slip(r):
     st, sl = r.get("stick_per_increment"), r.get("slip_per_increment")
     return None if not st or not sl else f"{sl[-1]}/{st[-1]}"
@@ -77,18 +75,6 @@ cols = [("ref", lambda r: r.get("ref"), "{}"), ("np", lambda r: r.get("np"), "{}
         ("Q/P sliding", lambda r: r.get("Q_over_P_sliding_mean"), "{:.4f}"),
         ("slip/stick end", stick_slip, "{}"),
         ("patch shift", lambda r: r.get("patch_shift"), "{:.4f}")]
-def cell(r, get, fmt, name):
-    v = get(r)
-    if v is None: return "-"
-    try: s = fmt.format(v)
-    except (ValueError, TypeError): s = str(v)
-    if name == "wall s" and r.get("disturbed"): s += "*"
-    return s
-table = [[c[0] for c in cols]] + [[cell(r, g, f, n) for n, g, f in cols] for r in rows]
-w = [max(len(t[i]) for t in table) for i in range(len(cols))]
-print("ironing (3D sliding sphere), * = disturbed: other processes used > max(0.3 s, 10 % of the wall time) of CPU")
-for j, t in enumerate(table):
-    print("  ".join(s.rjust(w[i]) for i, s in enumerate(t)))
-    if j == 0: print("  ".join("-" * x for x in w))
+print_table(rows, cols, "ironing (3D sliding sphere), ")
 '
 exit "$failed"

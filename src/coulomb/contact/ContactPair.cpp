@@ -126,7 +126,7 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
   lambdaN_.assign(owned, 0.0);
   pressure_.assign(owned, 0.0);
   traction_.assign(owned, {0.0, 0.0, 0.0});
-  weightedSlip_ = slipIncrement_ = accumulatedSlip_ = stepStartAccumulatedSlip_ = stepStartTraction_ = traction_;
+  weightedSlip_ = slipIncrement_ = stepStartAccumulatedSlip_ = stepStartTraction_ = traction_;
   openedInStep_.assign(owned, 0);
   beginStep();
 }
@@ -140,10 +140,9 @@ void ContactPair::beginStep() {
   stepStartMortar_ = mortar_;
   stepStartX_ = x_.x.empty() ? referenceConfiguration(*interface_) : x_;
   for (std::size_t i = 0; i < state_.size(); ++i) {
-    for (int c = 0; c < 3; ++c) accumulatedSlip_[i][c] = stepStartAccumulatedSlip_[i][c] + slipIncrement_[i][c];
+    for (int c = 0; c < 3; ++c) stepStartAccumulatedSlip_[i][c] += slipIncrement_[i][c];
     slipIncrement_[i] = weightedSlip_[i] = {0.0, 0.0, 0.0};
   }
-  stepStartAccumulatedSlip_ = accumulatedSlip_;
   stepStartTraction_ = traction_;
   std::fill(openedInStep_.begin(), openedInStep_.end(), 0);
   // Slip reset policy: slipping nodes start the step as stick every n-th step.

@@ -131,6 +131,9 @@ private:
   std::array<double, 3> weightedSlip(const NodalMortarEntry& entry, std::array<DerivativeRow, 3>* derivative) const;
   /// The message when an active node penetrates deeper than the search radius, else "".
   std::string penetrationFailure(long long node, double gap, double D) const;
+  /// Stores the new state of owned node i (friction: an open node has no slip,
+  /// and it is marked when it opens) and counts it into the summary.
+  void settleState(std::size_t i, ContactState state, ContactState previous, PairIterationSummary& summary);
   /// The kernel parameters of a frictional pair.
   FrictionalParameters frictionalParameters() const;
   /// Sums the summary over ranks.
@@ -167,7 +170,7 @@ private:
   InterfaceConfiguration stepStartX_;
   int steps_ = 0;
   std::vector<char> openedInStep_;  ///< active -> inactive at some iterate of this step (FrictionalNodeInput::reclosing)
-  std::vector<std::array<double, 3>> traction_, stepStartTraction_, weightedSlip_, slipIncrement_, accumulatedSlip_,
+  std::vector<std::array<double, 3>> traction_, stepStartTraction_, weightedSlip_, slipIncrement_,
       stepStartAccumulatedSlip_;
 };
 

@@ -96,6 +96,14 @@ void addScaled(DerivativeRow& to, const DerivativeRow& from, double scale) {
 
 }  // namespace
 
+void ContactPair::settleState(std::size_t i, ContactState state, ContactState previous,
+                              PairIterationSummary& summary) {
+  if (isActive(previous) && !isActive(state)) openedInStep_[i] = 1;
+  if (!isActive(state)) weightedSlip_[i] = slipIncrement_[i] = {0.0, 0.0, 0.0};  // an open node does not slip
+  state_[i] = state;
+  countState(summary.activeSet, state, previous);
+}
+
 FrictionalParameters ContactPair::frictionalParameters() const {
   FrictionalParameters p;
   p.k = k_;
@@ -220,13 +228,10 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
       if (state == ContactState::Inactive) decided = State{};
       if (isActive(state) && failure.empty()) failure = penetrationFailure(node, entry->gap, entry->D);
     }
-    if (isActive(previous) && !isActive(state)) openedInStep_[i] = 1;
-    if (!isActive(state)) weightedSlip_[i] = slipIncrement_[i] = {0.0, 0.0, 0.0};  // an open node does not slip
-    state_[i] = state;
+    settleState(i, state, previous, summary);
     lambdaN_[i] = decided.lambdaN;
     pressure_[i] = -k_ * decided.lambdaN;
     traction_[i] = decided.traction;
-    countState(summary.activeSet, state, previous);
   }
   throwIfAnyRankFailed(*interface_->comm(), failure);
   differentiateActive();
@@ -404,12 +409,8 @@ PairIterationSummary ContactPair::updatePenaltyFrictional(bool updateSet, Contac
       }
       if (isActive(state) && failure.empty()) failure = penetrationFailure(node, entry->gap, entry->D);
     }
-    state_[i] = state;
-    if (!isActive(state)) {
-      traction_[i] = weightedSlip_[i] = slipIncrement_[i] = {0.0, 0.0, 0.0};  // an open node does not slip
-      lambdaN_[i] = pressure_[i] = 0.0;
-    }
-    countState(summary.activeSet, state, previous);
+    settleState(i, state, previous, summary);
+    if (!isActive(state)) traction_[i] = {0.0, 0.0, 0.0}, lambdaN_[i] = pressure_[i] = 0.0;
   }
   throwIfAnyRankFailed(*interface_->comm(), failure);
   differentiateActive();

@@ -208,7 +208,7 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
   // The same pattern as the last result (same K, same columns, same rows):
   // new values in place. Every rank must agree (the result is collective).
   // (Compared against the last result's own graph: no copy of the pattern is kept.)
-  bool samePattern = !last_.is_null() && lastK_ == &K && columnGids_ == lastColumnGids_;
+  bool samePattern = !last_.is_null() && columnGids_ == lastColumnGids_;
   if (samePattern) {
     const auto graph = last_->getLocalMatrixDevice().graph;
     samePattern = graph.row_map.extent(0) == rowPointers_.size() && graph.entries.extent(0) == columns_.size() &&
@@ -257,7 +257,6 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
   if (anyNewColumns) importer = Teuchos::rcp(new Import(K.getDomainMap(), columnMap));
   last_ = Teuchos::rcp(new CrsMatrix(local, rowMap, columnMap, K.getDomainMap(), K.getRangeMap(), importer,
                                      Teuchos::null));
-  lastK_ = &K;
   lastColumnGids_ = columnGids_;
   release();
   return last_;

@@ -63,7 +63,6 @@ private:
   std::vector<double> values_;
   std::vector<GlobalOrdinal> columnGids_;
   Teuchos::RCP<CrsMatrix> last_;
-  const CrsMatrix* lastK_ = nullptr;
   std::vector<GlobalOrdinal> lastColumnGids_;
   int reuses_ = 0;
 };
