@@ -66,6 +66,8 @@ coulomb_bad_input(contact_friction_negative_coefficient "'Contact/Pairs/punch/Fr
 coulomb_bad_input(contact_friction_tresca_zero_threshold "'Contact/Pairs/punch/Tresca Threshold' must be > 0")
 coulomb_bad_input(contact_friction_unknown_law "'Contact/Pairs/punch/Friction Law'")
 coulomb_bad_input(contact_friction_zero_tangent_factor "'Contact/Pairs/punch/Tangent Factor'")
+coulomb_bad_input(contact_saddle_point_frictional "'Contact/System Form' = Saddle Point.*'Contact/Pairs/punch' is frictional")
+coulomb_bad_input(contact_saddle_point_iterative_solver "'Linear Solver/Linear Solver Type' must be Amesos2")
 coulomb_bad_input(dirichlet_rotation_with_value "'Dirichlet Conditions/turn/Rotation Angle'.*no 'Value'")
 coulomb_bad_input(contact_friction_missing_field "'Contact/Pairs/punch/Friction Coefficient Field'.*no nodal variable 'mu'")
 coulomb_bad_input(contact_penetration_beyond_search_radius "Contact/Pairs/punch: slave node [0-9]+ penetrates the master by .*search radius")

@@ -11,6 +11,8 @@
 //    the bulk residual, normals, slip, D and g~ (FrictionalNode.hpp) and J is
 //    their exact derivative (stick and slip sets frozen), anywhere: checked
 //    at the converged state and at a perturbed one.
+//  - The saddle-point form (multipliers as unknowns): the whole tangent,
+//    multiplier rows and columns included, anywhere.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -45,14 +47,20 @@ std::string replaceAll(std::string text, const std::string& from, const std::str
 
 /// Runs a shipped Hertz deck on a distorted copy of its mesh with the given formulation.
 std::unique_ptr<solver::Simulation> solveDistorted(const std::string& deck, const std::string& mesh,
-                                                   const std::string& formulation, const std::string& friction = "") {
+                                                   const std::string& formulation, const std::string& friction = "",
+                                                   bool saddlePoint = false) {
   const std::string dir = scratchDirectory("contact_jacobian_" + deck + "_" + formulation +
-                                           (friction.empty() ? "" : "_friction" + std::to_string(friction.size())));
+                                           (friction.empty() ? "" : "_friction" + std::to_string(friction.size())) +
+                                           (saddlePoint ? "_saddle_point" : ""));
   writeDistortedCopy(shippedMesh(mesh), dir + "/mesh.e", 0.15);
   std::string text = readFile(std::string(COULOMB_SOURCE_DIR) + "/xml/" + deck + ".xml");
   text = replaceAll(text, "../exodus_meshes/" + mesh, "mesh.e");
   text = replaceAll(text, "name=\"Formulation\" type=\"string\" value=\"ALM\"/>",
                     "name=\"Formulation\" type=\"string\" value=\"" + formulation + "\"/>" + friction);
+  if (saddlePoint)
+    text = replaceAll(text, "<ParameterList name=\"Contact\">",
+                      "<ParameterList name=\"Contact\"><Parameter name=\"System Form\" type=\"string\" "
+                      "value=\"Saddle Point\"/>");
   writeOnRoot(dir + "/deck.xml", text);
   auto simulation = std::make_unique<solver::Simulation>(dir + "/deck.xml", worldComm(), nullptr, dir + "/out.e");
   simulation->run();
@@ -133,7 +141,83 @@ void expectFrictionalTangentMatchesDifferences(const std::string& deck, const st
   EXPECT_LT(directionalError(*simulation, 1e-3), 1e-6);
 }
 
+/// The saddle-point form (multipliers z as unknowns, ContactModel::
+/// saddlePointTangent): the whole tangent against central differences of
+/// the residual (u, z) -> (r - f_c, R), set frozen, along a direction in
+/// both u and z, at the converged state + `offset` (which also gives the
+/// inactive nodes a multiplier: their rows depend on n and D then).
+double saddlePointDirectionalError(solver::Simulation& simulation, double offset) {
+  auto& contact = *simulation.contact();
+  const auto& map = contact.saddlePointMap();
+  const auto dofMap = simulation.dofMap().ownedMap();
+  const std::size_t n = dofMap->getNodeNumElements();
+  auto field = [&](double a, double b) {
+    Vector v(map), u(dofMap);
+    auto vd = v.getDataNonConst(0);
+    for (std::size_t i = 0; i < map->getNodeNumElements(); ++i)
+      vd[i] = std::sin(a * static_cast<double>(map->getGlobalElement(static_cast<LocalOrdinal>(i))) + b);
+    {
+      auto ud = u.getDataNonConst(0);
+      for (std::size_t i = 0; i < n; ++i) ud[i] = vd[i];
+    }
+    simulation.assembler().constraints().setPrescribedValues(0.0, u);  // no change of prescribed DoFs
+    const auto ud = u.getData(0);
+    for (std::size_t i = 0; i < n; ++i) vd[i] = ud[i];
+    return v;
+  };
+  auto evaluateAt = [&](const Vector& x, Vector& F, Teuchos::RCP<CrsMatrix>* J) {
+    Vector u(dofMap), r(dofMap);
+    {
+      auto ud = u.getDataNonConst(0);
+      const auto xd = x.getData(0);
+      for (std::size_t i = 0; i < n; ++i) ud[i] = xd[i];
+    }
+    simulation.assembler().assemble(1.0, u, &r, nullptr);
+    contact.updateSaddlePoint(x, u, true);
+    contact.saddlePointResidual(r, F);
+    if (J) {
+      auto K = simulation.assembler().createMatrix();
+      simulation.assembler().assemble(1.0, u, nullptr, K.get());
+      *J = contact.saddlePointTangent(*K);
+    }
+  };
+  Vector x(*simulation.saddlePointState(), Teuchos::Copy), F(map), Fp(map), Fm(map), Jw(map), xp(map), xm(map);
+  const Vector w = field(0.7, 0.3);
+  if (offset != 0.0) {
+    const Vector shift = field(1.3, 1.1);
+    x.update(offset * x.normInf() / shift.normInf(), shift, 1.0);
+  }
+  const double h = 1e-7 * x.normInf() / w.normInf();
+  Teuchos::RCP<CrsMatrix> J;
+  evaluateAt(x, F, &J);
+  J->apply(w, Jw);
+  xp.update(1.0, x, h, w, 0.0);
+  xm.update(1.0, x, -h, w, 0.0);
+  evaluateAt(xp, Fp, nullptr);
+  evaluateAt(xm, Fm, nullptr);
+  Fp.update(-1.0 / (2 * h), Fm, 1.0 / (2 * h));
+  Fp.update(-1.0, Jw, 1.0);
+  const double error = Fp.normInf() / Jw.normInf();
+  if (worldComm()->getRank() == 0) std::printf("saddle point: directional error %.3e (offset %g)\n", error, offset);
+  return error;
+}
+
+void expectSaddlePointTangentMatchesDifferences(const std::string& deck, const std::string& mesh) {
+  auto simulation = solveDistorted(deck, mesh, "ALM", "", true);
+  EXPECT_GT(simulation->contact()->lastSummary().activeSet.active, 5u);
+  EXPECT_LT(saddlePointDirectionalError(*simulation, 0.0), 1e-6);
+  EXPECT_LT(saddlePointDirectionalError(*simulation, 1e-3), 1e-6);
+}
+
 }  // namespace
+
+TEST(ContactJacobian, SaddlePoint2DMatchesFiniteDifferences) {
+  expectSaddlePointTangentMatchesDifferences("hertz2d", "hertz2d.e");
+}
+
+TEST(ContactJacobian, SaddlePoint3DMatchesFiniteDifferences) {
+  expectSaddlePointTangentMatchesDifferences("hertz3d_quarter", "hertz3d_quarter.e");
+}
 
 TEST(ContactJacobian, Coulomb2DMatchesFiniteDifferences) {
   expectFrictionalTangentMatchesDifferences("hertz2d", "hertz2d.e", "", true);

@@ -25,6 +25,20 @@ ContactModel::ContactModel(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>
   for (const auto& pair : settings.pairs)
     pairs_.push_back(std::make_unique<ContactPair>(mesh, ownedDofMap, pair, model));
   pairSummaries_.resize(pairs_.size());
+  if (!saddlePoint()) return;
+  // The multiplier block: dim unknowns per slave node of each pair, numbered
+  // after the displacements, owned by the slave node's owner.
+  const auto owned = ownedDofMap->getNodeElementList();
+  std::vector<GlobalOrdinal> gids(owned.begin(), owned.end());
+  GlobalOrdinal next = static_cast<GlobalOrdinal>(dim_) * mesh.global().numNodes();
+  for (auto& pair : pairs_) {
+    pair->setMultiplierOffset(next);
+    for (int s : pair->interface().ownedSlaveNodes())
+      for (int c = 0; c < dim_; ++c) gids.push_back(pair->multiplierDof(s, c));
+    next += static_cast<GlobalOrdinal>(dim_ * pair->interface().slaveNodes().size());
+  }
+  saddlePointMap_ = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                         Teuchos::ArrayView<const GlobalOrdinal>(gids), 0, ownedDofMap->getComm()));
 }
 
 ContactModel::~ContactModel() = default;
@@ -52,9 +66,8 @@ void ContactModel::restoreStep() {
   for (auto& pair : pairs_) pair->restoreStep();
 }
 
-void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool freezeSet) {
-  static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact update");
-  Teuchos::TimeMonitor scope(*timer);
+template <class UpdatePair>
+void ContactModel::updatePairs(bool freezeSet, UpdatePair&& updatePair) {
   contributions_ = ContactContributions();
   summary_ = ContactIterationSummary();
   double normal2 = 0, force2 = 0, stick2 = 0, slip2 = 0;
@@ -62,7 +75,7 @@ void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool free
     // Simplified semi-smooth Newton: the set moves at the predictor and the first iterate only.
     const bool updateSet =
         !freezeSet && (pairs_[p]->settings().semiSmooth == SemiSmoothNewton::Full || updatesInStep_ < 2);
-    pairSummaries_[p] = pairs_[p]->update(u, bulkResidual, updateSet, contributions_);
+    pairSummaries_[p] = updatePair(p, updateSet);
     summary_.activeSet += pairSummaries_[p].activeSet;
     normal2 += pairSummaries_[p].normalResidual2;
     force2 += pairSummaries_[p].contactForce2;
@@ -85,7 +98,14 @@ void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool free
   summary_.contactForce = std::sqrt(force2);
   summary_.stickResidual = std::sqrt(stick2);
   summary_.slipResidual = std::sqrt(slip2);
+}
 
+void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool freezeSet) {
+  static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact update");
+  Teuchos::TimeMonitor scope(*timer);
+  updatePairs(freezeSet, [&](std::size_t p, bool updateSet) {
+    return pairs_[p]->update(u, bulkResidual, updateSet, contributions_);
+  });
   const bool local = !contributions_.transform.empty() || !contributions_.tangentTransform.empty() || !contributions_.contactStiffness.empty() ||
                      !contributions_.constraint.empty() || !contributions_.contactResidual.empty() ||
                      !contributions_.constraintResidual.empty();
@@ -150,6 +170,57 @@ Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMat
   static const auto addTimer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact K + interface rows");
   Teuchos::TimeMonitor addScope(*addTimer);
   return tangentSum_.add(*bulkTangent, interfaceRows);
+}
+
+void ContactModel::updateSaddlePoint(const Vector& x, const Vector& u, bool freezeSet) {
+  static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact update");
+  Teuchos::TimeMonitor scope(*timer);
+  // z of each pair's owned slave nodes, in the order of saddlePointMap().
+  const auto data = x.getData(0);
+  std::size_t next = map_->getNodeNumElements();
+  std::vector<std::vector<std::array<double, 3>>> z(pairs_.size());
+  for (std::size_t p = 0; p < pairs_.size(); ++p)
+    for (std::size_t i = 0; i < pairs_[p]->interface().ownedSlaveNodes().size(); ++i) {
+      std::array<double, 3> value{};
+      for (int c = 0; c < dim_; ++c) value[c] = data[next++];
+      z[p].push_back(value);
+    }
+  updatePairs(freezeSet, [&](std::size_t p, bool updateSet) {
+    return pairs_[p]->updateSaddlePoint(u, z[p], updateSet, contributions_);
+  });
+  contributes_ = true;
+  transform_ = Teuchos::null;
+}
+
+void ContactModel::saddlePointResidual(const Vector& bulkResidual, Vector& f) const {
+  f.putScalar(0.0);
+  {
+    auto out = f.getDataNonConst(0);
+    const auto r = bulkResidual.getData(0);
+    for (std::size_t i = 0; i < map_->getNodeNumElements(); ++i) out[i] = r[i];
+  }
+  linalg::addEntries(contributions_.contactResidual, f);
+  linalg::addEntries(contributions_.multipliers.residual, f);
+}
+
+Teuchos::RCP<CrsMatrix> ContactModel::saddlePointTangent(const CrsMatrix& bulkTangent) const {
+  static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact saddle-point tangent");
+  Teuchos::TimeMonitor scope(*timer);
+  // A checking path: K is copied as triplets into a fresh matrix on the
+  // extended map (no reuse, no in-place merge as in condensedTangent).
+  const auto& m = contributions_.multipliers;
+  std::vector<linalg::MatrixTriplet> triplets = contributions_.contactStiffness;
+  triplets.insert(triplets.end(), m.columns.begin(), m.columns.end());
+  triplets.insert(triplets.end(), m.rows.begin(), m.rows.end());
+  const auto& columns = *bulkTangent.getColMap();
+  for (std::size_t i = 0; i < map_->getNodeNumElements(); ++i) {
+    Teuchos::ArrayView<const LocalOrdinal> indices;
+    Teuchos::ArrayView<const double> values;
+    bulkTangent.getLocalRowView(static_cast<LocalOrdinal>(i), indices, values);
+    const GlobalOrdinal row = map_->getGlobalElement(static_cast<LocalOrdinal>(i));
+    for (int k = 0; k < indices.size(); ++k) triplets.push_back({row, columns.getGlobalElement(indices[k]), values[k]});
+  }
+  return linalg::matrixFromTriplets(triplets, saddlePointMap_);
 }
 
 bool ContactModel::converged() const {

@@ -66,6 +66,21 @@ public:
   /// (same pattern: the values are replaced); K unchanged; K itself when no pair contributes.
   Teuchos::RCP<CrsMatrix> condensedTangent(const Teuchos::RCP<CrsMatrix>& bulkTangent) const;
 
+  /// `Contact/System Form` = Saddle Point: the multipliers are Newton
+  /// unknowns (MultiplierBlock in ContactPair.hpp) instead of being condensed.
+  bool saddlePoint() const { return settings_.systemForm == ContactSystemForm::SaddlePoint; }
+  /// The unknowns of the saddle-point form: the owned displacement DoFs (the
+  /// DoF map's, in its order, so a displacement vector is the leading part of
+  /// the local data) then the owned multiplier DoFs. Null when condensed.
+  const Teuchos::RCP<const Map>& saddlePointMap() const { return saddlePointMap_; }
+  /// Collective, saddle-point form: the contact state at x = (u, z), `u` its
+  /// displacement part (on the DoF map).
+  void updateSaddlePoint(const Vector& x, const Vector& u, bool freezeSet = false);
+  /// Saddle-point form: f := (r - f_c, R) on saddlePointMap(), r the bulk residual at u.
+  void saddlePointResidual(const Vector& bulkResidual, Vector& f) const;
+  /// Saddle-point form: the tangent [K + K_c, C; dR/du, dR/dz] as a new matrix.
+  Teuchos::RCP<CrsMatrix> saddlePointTangent(const CrsMatrix& bulkTangent) const;
+
   /// The contributions of the last update (the saddle-point form included).
   const ContactContributions& contributions() const { return contributions_; }
   const ContactIterationSummary& lastSummary() const { return summary_; }
@@ -82,7 +97,12 @@ public:
   std::vector<double> globals() const;
 
 private:
+  /// The loop over pairs of update() and updateSaddlePoint(): `updatePair(p, updateSet)`.
+  template <class UpdatePair>
+  void updatePairs(bool freezeSet, UpdatePair&& updatePair);
+
   ContactSettings settings_;
+  Teuchos::RCP<const Map> saddlePointMap_;
   int dim_;
   Teuchos::RCP<const Map> map_;
   std::vector<std::unique_ptr<ContactPair>> pairs_;

@@ -111,6 +111,7 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
   k_ = settings.scaleFactor;
   multiplierOffset_ = static_cast<GlobalOrdinal>(dim_) * mesh.global().numNodes();
   minimumD_ = 1e-8 * std::pow(h, dim_ - 1);
+  referenceD_ = std::pow(h, dim_ - 1);
 
   prescribed_.assign(interface_->interfaceNodes().size(), {false, false, false});
   for (const auto& condition : model.dirichlet) {
@@ -209,17 +210,23 @@ void ContactPair::searchAndIntegrate(const Vector& u) {
 }
 
 void ContactPair::differentiateActive() {
+  std::vector<char> flags(state_.size(), 0);
+  for (std::size_t i = 0; i < state_.size(); ++i) flags[i] = isActive(state_[i]) ? 1 : 0;
+  differentiate(flags);
+}
+
+void ContactPair::differentiate(const std::vector<char>& ownedFlags) {
   static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact mortar derivatives");
   Teuchos::TimeMonitor scope(*timer);
-  // Which slave nodes are active anywhere: one flag per slave node, max over ranks.
+  // Which slave nodes are flagged anywhere: one flag per slave node, max over ranks.
   const auto& slaveNodes = interface_->slaveNodes();
   const auto& owned = interface_->ownedSlaveNodes();
   std::vector<int> local(slaveNodes.size(), 0), active(slaveNodes.size(), 0);
   for (std::size_t i = 0; i < owned.size(); ++i)
-    if (isActive(state_[i])) local[owned[i]] = 1;
+    if (ownedFlags[i]) local[owned[i]] = 1;
   Teuchos::reduceAll(*interface_->comm(), Teuchos::REDUCE_MAX, static_cast<int>(local.size()), local.data(),
                      active.data());
-  // The searched slave faces with an active node: all the faces of an active
+  // The searched slave faces with a flagged node: all the faces of a flagged
   // node are there (its D, M, g~ derivatives are complete), no others.
   SearchResult subset;
   subset.radius = search_.radius;

@@ -50,6 +50,19 @@ struct SaddlePointContributions {
   std::vector<linalg::VectorEntry> force;      ///< -f_c with the current lambda_n
 };
 
+/// @brief The Newton system with the multipliers as unknowns (deck
+/// `Contact/System Form` = Saddle Point; ContactPairSaddlePoint.cpp): per
+/// slave node j a vector unknown z_j = (k / eps_n) lambda_j (a length, so that
+/// its columns t eps_n D_j are of the size of the stiffness), and the rows
+/// R_j = (eps_n t / k) r_lambda_j of NodalContactLaw (4.72b, components form):
+///   [K + K_c   C] [du]     [r - f_c]
+///   [  R_u   R_z] [dz] = - [  R    ]
+struct MultiplierBlock {
+  std::vector<linalg::MatrixTriplet> columns;  ///< C = -d f_c / d z (displacement rows)
+  std::vector<linalg::MatrixTriplet> rows;     ///< d R / d (u, z) (multiplier rows)
+  std::vector<linalg::VectorEntry> residual;   ///< R (multiplier rows)
+};
+
 /// @brief Contributions of one or more pairs to the condensed system.
 struct ContactContributions {
   std::vector<linalg::MatrixTriplet> transform;   ///< T - I
@@ -62,6 +75,7 @@ struct ContactContributions {
   std::vector<linalg::MatrixTriplet> contactStiffness;  ///< K_c
   std::vector<linalg::VectorEntry> contactResidual;     ///< -f_c (penalty pairs)
   SaddlePointContributions saddle;                      ///< ALM pairs, uncondensed form
+  MultiplierBlock multipliers;  ///< System Form = Saddle Point (then transform etc. stay empty)
 };
 
 /// @brief Per-update figures of one pair, summed over ranks.
@@ -103,6 +117,18 @@ public:
   PairIterationSummary update(const Vector& u, const Vector& bulkResidual, bool updateSet,
                               ContactContributions& out);
 
+  /// Saddle-point form: this pair's multiplier unknowns z_j are the global
+  /// DoFs first + dim × (index in slaveNodes()) + component.
+  void setMultiplierOffset(GlobalOrdinal first) { multiplierBlockOffset_ = first; }
+  GlobalOrdinal multiplierDof(int slaveIndex, int c) const {
+    return multiplierBlockOffset_ + static_cast<GlobalOrdinal>(dim_ * slaveIndex + c);
+  }
+  /// update() of the saddle-point form (MultiplierBlock): `z` holds the
+  /// multiplier unknowns of the owned slave nodes (ownedSlaveNodes() order);
+  /// the active set follows (4.74) with lambda = (eps_n / k) z.
+  PairIterationSummary updateSaddlePoint(const Vector& u, const std::vector<std::array<double, 3>>& z, bool updateSet,
+                                         ContactContributions& out);
+
   /// Per owned slave node (ContactInterface::ownedSlaveNodes() order).
   struct NodeOutput {
     long long node = -1;
@@ -122,6 +148,8 @@ public:
 private:
   void searchAndIntegrate(const Vector& u);
   void differentiateActive();
+  /// The derivative pass for the owned slave nodes flagged (ownedSlaveNodes() order).
+  void differentiate(const std::vector<char>& ownedFlags);
   /// update() for frictional pairs (ContactPairFriction.cpp).
   PairIterationSummary updateFrictional(const Vector& bulkResidual, bool updateSet, ContactContributions& out);
   /// The same for the penalty formulation (forces, no condensation).
@@ -148,6 +176,8 @@ private:
   std::unique_ptr<InterfaceGather> gather_;
   int dim_;
   double epsN_ = 0, k_ = 1, thickness_ = 1, radius_ = 0, minimumD_ = 0;
+  double referenceD_ = 1;  ///< h^(dim-1), h the mean slave face size: the scale of D_j
+  GlobalOrdinal multiplierBlockOffset_ = 0;  ///< saddle-point form: first global index of z
   GlobalOrdinal multiplierOffset_ = 0;  ///< first global index of the lambda_n DoFs (saddle-point form)
   /// prescribed_[i][c]: component c of interface node i is a Dirichlet DoF.
   std::vector<std::array<bool, 3>> prescribed_;

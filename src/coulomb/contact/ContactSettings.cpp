@@ -38,6 +38,11 @@ void addValidContactParameters(ParameterList& valid) {
               io::positive());
   contact.set("Slip Absolute Tolerance", defaults.slipAbsoluteTolerance, "absolute part of the slip test [force]",
               io::positive());
+  contact.set("System Form", "Condensed",
+              "Condensed: multipliers eliminated, displacement-only Newton system (default); Saddle Point: the "
+              "multipliers are Newton unknowns, solved by the direct solver (Amesos2) - a check of the condensation, "
+              "ALM frictionless pairs only",
+              io::oneOf({"Condensed", "Saddle Point"}));
   ParameterList& pairs = contact.sublist("Pairs", false, "One sublist per contact pair, named freely");
   ParameterList& pair = pairs.sublist("*", false, "a slave/master pair of side sets");
   const ContactPairSettings d;
@@ -107,6 +112,9 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
   settings.stickAbsoluteTolerance = io::valueOrDefault<double>(user, validContact, "Stick Absolute Tolerance");
   settings.slipRelativeTolerance = io::valueOrDefault<double>(user, validContact, "Slip Relative Tolerance");
   settings.slipAbsoluteTolerance = io::valueOrDefault<double>(user, validContact, "Slip Absolute Tolerance");
+  settings.systemForm = io::valueOrDefault<std::string>(user, validContact, "System Form") == "Saddle Point"
+                            ? ContactSystemForm::SaddlePoint
+                            : ContactSystemForm::Condensed;
   if (!user.isSublist("Pairs")) return settings;
   const ParameterList& pairs = user.sublist("Pairs");
   const ParameterList& v = validContact.sublist("Pairs").sublist("*");
@@ -155,6 +163,10 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
     COULOMB_REQUIRE(s.slipThreshold < 1.0, where << "Slip Threshold' must be < 1, got " << s.slipThreshold);
     COULOMB_REQUIRE(s.slave != s.master, "deck: 'Contact/Pairs/" << name << "' names side set '" << s.slave
                                                                   << "' as both Slave and Master");
+    COULOMB_REQUIRE(settings.systemForm == ContactSystemForm::Condensed ||
+                        (s.formulation == ContactFormulation::ALM && !s.frictional()),
+                    "deck: 'Contact/System Form' = Saddle Point is for ALM frictionless pairs; 'Contact/Pairs/"
+                        << name << "' is " << (s.frictional() ? "frictional" : "Penalty"));
     settings.pairs.push_back(std::move(s));
   }
   return settings;

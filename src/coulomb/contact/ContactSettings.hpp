@@ -31,6 +31,13 @@ enum class SemiSmoothNewton { Full, Simplified };
 /// increments with the current operators (4.65a), kept for comparison.
 enum class SlipMeasure { Objective, NonObjective };
 
+/// Condensed: the dual multipliers are eliminated (D diagonal), the Newton
+/// system is displacement-only (the production path). SaddlePoint: the
+/// multipliers are unknowns of their own (a vector per slave node, a Tpetra
+/// DoF block after the displacements), solved by the direct solver: a check
+/// of the condensation; ALM frictionless pairs only.
+enum class ContactSystemForm { Condensed, SaddlePoint };
+
 /// @brief One contact pair.
 struct ContactPairSettings {
   std::string name;    ///< the deck sublist name (messages, output variable names)
@@ -75,6 +82,7 @@ struct ContactPairSettings {
 /// @brief Everything about contact in a deck.
 struct ContactSettings {
   std::vector<ContactPairSettings> pairs;
+  ContactSystemForm systemForm = ContactSystemForm::Condensed;
   /// Normal constraint residual ||eps_n g~||: converged when below
   /// relativeTolerance × ||contact forces|| + absoluteTolerance.
   double normalRelativeTolerance = 1e-6;

@@ -11,6 +11,7 @@
 #include "coulomb/contact/ContactModel.hpp"
 #include "coulomb/core/Error.hpp"
 #include "coulomb/core/Parallel.hpp"
+#include "coulomb/linalg/TripletAssembly.hpp"
 
 namespace coulomb::solver {
 
@@ -21,10 +22,11 @@ ModelEvaluator::ModelEvaluator(fem::Assembler& assembler, const Teuchos::RCP<con
                                std::function<void()> beforeJacobian, contact::ContactModel* contact)
     : assembler_(assembler),
       map_(ownedMap),
-      space_(Thyra::createVectorSpace<Scalar>(ownedMap)),
       factory_(std::move(factory)),
       beforeJacobian_(std::move(beforeJacobian)),
       contact_(contact && !contact->empty() ? contact : nullptr) {
+  saddlePoint_ = contact_ && contact_->saddlePoint();
+  space_ = Thyra::createVectorSpace<Scalar>(saddlePoint_ ? contact_->saddlePointMap() : ownedMap);
   nominal_ = createInArgs();
   auto x0 = Thyra::createMember(space_);
   Thyra::V_S(x0.ptr(), 0.0);
@@ -48,7 +50,16 @@ Thyra::ModelEvaluatorBase::OutArgs<double> ModelEvaluator::createOutArgsImpl() c
 }
 
 Teuchos::RCP<Thyra::LinearOpBase<double>> ModelEvaluator::create_W_op() const {
-  Teuchos::RCP<Tpetra::Operator<Scalar, LocalOrdinal, GlobalOrdinal>> matrix = assembler_.createMatrix();
+  Teuchos::RCP<Tpetra::Operator<Scalar, LocalOrdinal, GlobalOrdinal>> matrix;
+  if (saddlePoint_) {
+    // A placeholder on the extended map: evalContact puts the tangent in.
+    const auto& map = contact_->saddlePointMap();
+    std::vector<linalg::MatrixTriplet> identity;
+    for (GlobalOrdinal gid : map->getNodeElementList()) identity.push_back({gid, gid, 1.0});
+    matrix = linalg::matrixFromTriplets(identity, map);
+  } else {
+    matrix = assembler_.createMatrix();
+  }
   return Thyra::createLinearOp<Scalar, LocalOrdinal, GlobalOrdinal>(matrix, space_, space_);
 }
 
@@ -96,16 +107,27 @@ bool allFinite(const Vector& v) {
 void ModelEvaluator::evalContact(const Vector& x, Vector* f, const Teuchos::RCP<Thyra::LinearOpBase<double>>& W) const {
   // The same iterate on every rank or none: agree before any collective.
   const bool local = lastX_.is_null() || !sameVector(x, *lastX_);
+  // Saddle-point form: x = (u, z), u the leading part of the local data.
+  if (saddlePoint_) {
+    if (displacement_.is_null()) displacement_ = Teuchos::rcp(new Vector(map_));
+    auto u = displacement_->getDataNonConst(0);
+    const auto data = x.getData(0);
+    for (std::size_t i = 0; i < map_->getNodeNumElements(); ++i) u[i] = data[i];
+  }
+  const Vector& u = saddlePoint_ ? *displacement_ : x;
   if (anyRank(*map_->getComm(), local)) {
     if (bulkResidual_.is_null()) bulkResidual_ = Teuchos::rcp(new Vector(map_));
-    lastInverted_ = assembler_.assemble(time_, x, bulkResidual_.get(), nullptr).invertedElement;
+    lastInverted_ = assembler_.assemble(time_, u, bulkResidual_.get(), nullptr).invertedElement;
     lastInverted_ = anyRank(*map_->getComm(), lastInverted_ || !allFinite(*bulkResidual_));
-    if (!lastInverted_) contact_->update(x, *bulkResidual_);
+    if (!lastInverted_ && saddlePoint_) contact_->updateSaddlePoint(x, u);
+    else if (!lastInverted_) contact_->update(u, *bulkResidual_);
     lastX_ = Teuchos::rcp(new Vector(x, Teuchos::Copy));
   }
   if (f) {
     if (lastInverted_) {
       f->putScalar(std::numeric_limits<double>::quiet_NaN());
+    } else if (saddlePoint_) {
+      contact_->saddlePointResidual(*bulkResidual_, *f);
     } else {
       f->assign(*bulkResidual_);
       contact_->condenseResidual(*f);
@@ -114,8 +136,8 @@ void ModelEvaluator::evalContact(const Vector& x, Vector* f, const Teuchos::RCP<
   if (W != Teuchos::null && !lastInverted_) {
     beforeJacobian_();
     if (bulkTangent_.is_null()) bulkTangent_ = assembler_.createMatrix();
-    assembler_.assemble(time_, x, nullptr, bulkTangent_.get());
-    auto tangent = contact_->condensedTangent(bulkTangent_);
+    assembler_.assemble(time_, u, nullptr, bulkTangent_.get());
+    auto tangent = saddlePoint_ ? contact_->saddlePointTangent(*bulkTangent_) : contact_->condensedTangent(bulkTangent_);
     using ThyraOp = Thyra::TpetraLinearOp<Scalar, LocalOrdinal, GlobalOrdinal, typename CrsMatrix::node_type>;
     auto* op = dynamic_cast<ThyraOp*>(W.get());
     COULOMB_REQUIRE(op != nullptr, "internal: the Jacobian operator is not a Thyra::TpetraLinearOp");

@@ -4,7 +4,9 @@
 /// x = displacements (owned map), f = residual, W = tangent (Tpetra CrsMatrix).
 ///
 /// With contact (contact::ContactModel) f and W are the condensed residual and
-/// tangent of ContactModel.hpp. The contact state (active set, multipliers)
+/// tangent of ContactModel.hpp (or, with `Contact/System Form` = Saddle
+/// Point, x = (u, z) with the multiplier unknowns z and the uncondensed
+/// residual and tangent). The contact state (active set, multipliers)
 /// is updated once per new iterate x, at its first evaluation (f or W), from
 /// the bulk residual at x; W is then a new matrix per iterate (its pattern
 /// follows the contact), put into the Thyra operator NOX holds.
@@ -60,7 +62,8 @@ private:
   double time_ = 0.0;
   contact::ContactModel* contact_ = nullptr;
   // Contact: the iterate whose state is current, its bulk residual, the bulk tangent.
-  mutable Teuchos::RCP<Vector> lastX_, bulkResidual_;
+  bool saddlePoint_ = false;  ///< contact in the saddle-point form: x = (u, z) on ContactModel::saddlePointMap()
+  mutable Teuchos::RCP<Vector> lastX_, bulkResidual_, displacement_;
   mutable Teuchos::RCP<CrsMatrix> bulkTangent_;
   mutable bool lastInverted_ = false;
   void evalContact(const Vector& x, Vector* f, const Teuchos::RCP<Thyra::LinearOpBase<double>>& W) const;

@@ -77,6 +77,16 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
   if (!contactSettings.pairs.empty())
     contact_ = std::make_unique<contact::ContactModel>(*mesh_, dofs_->ownedMap(), contactSettings, model);
 
+  if (contact_ && contact_->saddlePoint()) {
+    // The saddle-point matrix (zero multiplier block on active normal rows)
+    // is for the direct solver; MueLu or Krylov defaults would not solve it.
+    auto& linear = settings_.linearSolver;
+    COULOMB_REQUIRE(!linear.isParameter("Linear Solver Type") || linear.get<std::string>("Linear Solver Type") == "Amesos2",
+                    "deck: 'Contact/System Form' = Saddle Point is solved by the direct solver: 'Linear Solver/Linear "
+                    "Solver Type' must be Amesos2 or left out, got '"
+                        << linear.get<std::string>("Linear Solver Type") << "'");
+    linear.set("Linear Solver Type", "Amesos2");
+  }
   solvers_ = std::make_unique<Solvers>();
   solvers_->linear = buildLinearSolver(settings_.linearSolver, dofs_->dofsPerNode(),
                                       static_cast<long long>(dofs_->ownedMap()->getGlobalNumElements()),
@@ -91,6 +101,7 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
                                                     contact_.get());
   displacement_ = Teuchos::rcp(new Vector(dofs_->ownedMap()));
   reactions_ = Teuchos::rcp(new Vector(dofs_->ownedMap()));
+  if (contact_ && contact_->saddlePoint()) saddlePointState_ = Teuchos::rcp(new Vector(contact_->saddlePointMap()));
 
   std::set<std::string> seen;
   for (const auto& d : model.dirichlet)
@@ -148,6 +159,25 @@ void Simulation::reportContact(RunSummary& summary) {
   }
 }
 
+NewtonReport Simulation::solve(Vector& trial) {
+  if (saddlePointState_.is_null()) return solvers_->newton->solve(trial);
+  // Saddle-point form: x = (u, z), the multipliers starting from the last
+  // converged step's; u is the leading part of the local data.
+  Vector x(*saddlePointState_, Teuchos::Copy);
+  const std::size_t n = dofs_->ownedMap()->getNodeNumElements();
+  {
+    auto xd = x.getDataNonConst(0);
+    const auto ud = trial.getData(0);
+    for (std::size_t i = 0; i < n; ++i) xd[i] = ud[i];
+  }
+  const NewtonReport report = solvers_->newton->solve(x);
+  const auto xd = x.getData(0);
+  auto ud = trial.getDataNonConst(0);
+  for (std::size_t i = 0; i < n; ++i) ud[i] = xd[i];
+  if (report.converged) saddlePointState_->assign(x);
+  return report;
+}
+
 RunSummary Simulation::run() {
   const auto start = std::chrono::steady_clock::now();
   const int dim = mesh_->dimension();
@@ -191,7 +221,7 @@ RunSummary Simulation::run() {
     constraints.setPrescribedValues(next, trial);
     solvers_->model->setTime(next);
     if (contact_) contact_->beginStep();
-    const NewtonReport report = solvers_->newton->solve(trial);
+    const NewtonReport report = solve(trial);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - stepStart).count();
     const int iterations = static_cast<int>(report.iterations.size()) - 1;
     if (!report.converged) {

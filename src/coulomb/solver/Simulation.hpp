@@ -27,6 +27,8 @@ class ContactModel;
 
 namespace coulomb::solver {
 
+struct NewtonReport;
+
 /// @brief What a finished run reports (the same on every rank).
 struct RunSummary {
   int steps = 0;               ///< converged steps written
@@ -65,6 +67,9 @@ public:
   fem::Assembler& assembler() { return *assembler_; }
   /// Total reaction force per component on the named node set at the last step.
   std::vector<double> reactionTotal(const std::string& nodeSet) const;
+  /// Contact in the saddle-point form: the converged (u, z) on
+  /// ContactModel::saddlePointMap() after run(); else null.
+  const Vector* saddlePointState() const { return saddlePointState_.get(); }
   /// The contact model (null without a "Contact" sublist with pairs).
   contact::ContactModel* contact() { return contact_.get(); }
 
@@ -73,6 +78,9 @@ private:
   void writeStep(double time, const std::vector<double>& stepGlobals);
   /// Console line per contact pair after a converged step; records the active counts.
   void reportContact(RunSummary& summary);
+  /// One Newton solve of a step from `trial` (displacements; the multipliers
+  /// too in the saddle-point form, kept in saddlePointState_).
+  NewtonReport solve(Vector& trial);
 
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   std::ostream* console_;
@@ -84,6 +92,7 @@ private:
   std::unique_ptr<Solvers> solvers_;
   Teuchos::RCP<Vector> displacement_;
   Teuchos::RCP<Vector> reactions_;
+  Teuchos::RCP<Vector> saddlePointState_;  ///< contact saddle-point form: converged (u, z)
   std::vector<std::string> reactionSets_;  ///< node sets whose reaction totals are written
 };
 
