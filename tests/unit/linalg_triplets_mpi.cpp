@@ -169,6 +169,22 @@ TEST(TripletAssembly, MatrixSumReusesTheMatrixWhenThePatternRepeats) {
   EXPECT_NE(third.get(), first.get());
   EXPECT_EQ(sum.reuses(), 1);
   expectSum(third, s3);
+  // Triplets only in K's own columns: K's pattern. Moving them to other
+  // columns of K keeps that pattern (reused, rows without triplets now
+  // included), and the values follow.
+  std::vector<linalg::MatrixTriplet> diagonal, lower;
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
+    const GlobalOrdinal g = map->getGlobalElement(static_cast<LocalOrdinal>(i));
+    diagonal.push_back({g, g, 0.5 * static_cast<double>(g)});
+    if (g > 0 && g % 2 == 0) lower.push_back({g, g - 1, 2.0});
+  }
+  auto fourth = sum.add(*K, diagonal);
+  EXPECT_NE(fourth.get(), third.get());
+  expectSum(fourth, diagonal);
+  auto fifth = sum.add(*K, lower);
+  EXPECT_EQ(fifth.get(), fourth.get());
+  EXPECT_EQ(sum.reuses(), 2);
+  expectSum(fifth, lower);
 }
 
 }  // namespace coulomb::test

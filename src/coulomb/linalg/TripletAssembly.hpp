@@ -12,6 +12,8 @@
 
 #include <Teuchos_RCP.hpp>
 
+#include <Tpetra_CrsMatrix_decl.hpp>
+
 #include "coulomb/core/TpetraTypes.hpp"
 
 namespace coulomb::linalg {
@@ -46,10 +48,11 @@ Teuchos::RCP<CrsMatrix> addTriplets(const CrsMatrix& K, const std::vector<Matrix
 
 /// @brief addTriplets for a Newton loop: when K + S has the pattern of the
 /// previous result (same column map, same rows), that matrix gets the new
-/// values in place and is returned again, instead of a fresh matrix (whose
-/// allocation costs mostly first-touch page faults on this machine).
-/// The result of a call is overwritten by the next call with the same
-/// pattern: callers must not keep it across calls.
+/// values in place and is returned again; otherwise the new matrix is built
+/// in the memory of the previous one when it fits (a fresh allocation of
+/// K's size costs mostly first-touch page faults on this machine).
+/// The result of a call is overwritten by the next call: callers must not
+/// keep it across calls.
 class MatrixSum {
 public:
   /// Collective, as addTriplets.
@@ -58,9 +61,10 @@ public:
   int reuses() const { return reuses_; }
 
 private:
-  std::vector<std::size_t> rowPointers_;
-  std::vector<LocalOrdinal> columns_;
-  std::vector<double> values_;
+  using LocalMatrix = CrsMatrix::local_matrix_device_type;
+  typename LocalMatrix::row_map_type::non_const_type rowBuffer_;  ///< row pointers being built
+  typename LocalMatrix::index_type::non_const_type indexBuffer_;  ///< column indices (capacity >= nnz)
+  typename LocalMatrix::values_type::non_const_type valueBuffer_;  ///< values (same capacity)
   std::vector<GlobalOrdinal> columnGids_;
   Teuchos::RCP<CrsMatrix> last_;
   std::vector<GlobalOrdinal> lastColumnGids_;
