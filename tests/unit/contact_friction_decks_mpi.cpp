@@ -1,4 +1,4 @@
-// Frictional contact end to end (ALM, Coulomb and Tresca): patch tests on
+// Frictional contact end to end (ALM, penalty and MPC, Coulomb and Tresca): patch tests on
 // the non-matching 2D patch mesh (stick, imposed slip, Tresca) and the
 // sliding punch (stick, partial slip, gross slip). Every run happens at
 // np = 1, 2, 3 (ctest MpiTests.np*); the decks are the shipped ones, edited.
@@ -173,6 +173,80 @@ TEST(FrictionPenalty, ImposedSlipAndSlidingPunch) {
   const double Q = std::abs(lastGlobal(r, "reaction_top_x")), P = -lastGlobal(r, "reaction_top_z");
   EXPECT_NEAR(Q / P, kMu, 0.01 * kMu);
   EXPECT_EQ(lastGlobal(r, "contact_stick_nodes_punch"), 0.0);
+}
+
+// MPC (Formulation = MPC: ties, states from reactions and gaps, the Coulomb
+// force on slipping nodes): the stick patch exact, the imposed slip carrying
+// mu p per node, the sliding punch reaching gross slip at mu P, and the
+// frictionless Hertz contact equal to the ALM one (same conditions at a
+// solution, decided differently on the way).
+TEST(FrictionMpc, StickSlipAndSlidingPunch) {
+  const std::string coulomb = "<Parameter name=\"Friction Law\" type=\"string\" value=\"Coulomb\"/>";
+  const std::string mpc = "<Parameter name=\"Formulation\" type=\"string\" value=\"MPC\"/>" + coulomb;
+  std::string stickText = stickPatchDeck();
+  stickText.replace(stickText.find(coulomb), coulomb.size(), mpc);
+  auto stick = runDeckText("friction_mpc_stick", stickText);
+  EXPECT_LT(homogeneousFieldError(*stick.simulation, kMu * kPressure / 2, 0.0), 1e-9 * 0.01);
+  ShippedDeck patch("friction_patch_2d", "contact_patch2d.e");
+  patch.replace(coulomb, mpc);
+  auto slip = runDeckText("friction_mpc_patch", patch.text);
+  ShippedDeck punch("friction_punch", "friction_punch.e");
+  punch.replace("<Parameter name=\"Formulation\" type=\"string\" value=\"ALM\"/>",
+                "<Parameter name=\"Formulation\" type=\"string\" value=\"MPC\"/>");
+  auto sliding = runDeckText("friction_mpc_punch", punch.text);
+  EXPECT_EQ(sliding.summary.cutbacks, 0);
+  int newton = 0;
+  for (int iterations : sliding.summary.stepNewtonIterations) newton += iterations;
+  EXPECT_LE(newton, 4 * 24);
+  if (worldComm()->getRank() != 0) return;
+  const double tau = kMu * kPressure / 2, stretch = 1 + kEpsXX;
+  const auto stuck = checkTractions(stick.results, [&](double) { return -tau / stretch; }, 1e-8 * kPressure);
+  EXPECT_EQ(stuck.stick, 8);
+  const auto slipping = checkTractions(slip.results, [](double p) { return -kMu * p; }, 1e-8 * kPressure);
+  EXPECT_EQ(slipping.slip, 8);
+  const auto& r = sliding.results;
+  const double Q = std::abs(lastGlobal(r, "reaction_top_x")), P = -lastGlobal(r, "reaction_top_z");
+  EXPECT_NEAR(Q / P, kMu, 0.01 * kMu);
+  EXPECT_EQ(lastGlobal(r, "contact_stick_nodes_punch"), 0.0);
+  std::printf("MPC sliding punch: Q/P %.5f, %d Newton iterations\n", Q / P, newton);
+}
+
+// Slip Reset Frequency < 0: never reset, slip direction from the weighted
+// slip alone. The imposed slip still carries mu p per node and the punch
+// reaches gross slip at mu P.
+TEST(FrictionPatch, SlipDirectionFromTheSlip) {
+  const std::string coulomb = "<Parameter name=\"Friction Law\" type=\"string\" value=\"Coulomb\"/>";
+  const std::string never = coulomb + "<Parameter name=\"Slip Reset Frequency\" type=\"int\" value=\"-1\"/>";
+  ShippedDeck patch("friction_patch_2d", "contact_patch2d.e"), punch("friction_punch", "friction_punch.e");
+  patch.replace(coulomb, never);
+  punch.replace(coulomb, never);
+  auto slip = runDeckText("friction_slip_direction_patch", patch.text);
+  auto sliding = runDeckText("friction_slip_direction_punch", punch.text);
+  EXPECT_EQ(sliding.summary.cutbacks, 0);
+  int newton = 0;
+  for (int iterations : sliding.summary.stepNewtonIterations) newton += iterations;
+  EXPECT_LE(newton, 4 * 24);
+  if (worldComm()->getRank() != 0) return;
+  const auto nodes = checkTractions(slip.results, [](double p) { return -kMu * p; }, 1e-8 * kPressure);
+  EXPECT_EQ(nodes.slip, 8);
+  const auto& r = sliding.results;
+  const double Q = std::abs(lastGlobal(r, "reaction_top_x")), P = -lastGlobal(r, "reaction_top_z");
+  EXPECT_NEAR(Q / P, kMu, 0.01 * kMu);
+  std::printf("slip direction from the slip: sliding punch Q/P %.5f, %d Newton iterations\n", Q / P, newton);
+}
+
+TEST(FrictionMpc, FrictionlessHertzEqualsAlm) {
+  ShippedDeck deck("hertz2d", "hertz2d.e");
+  deck.replace("<Parameter name=\"Formulation\" type=\"string\" value=\"ALM\"/>",
+               "<Parameter name=\"Formulation\" type=\"string\" value=\"MPC\"/>");
+  auto alm = runDeck("hertz2d");
+  auto mpc = runDeckText("frictionless_mpc_hertz", deck.text);
+  EXPECT_EQ(mpc.summary.cutbacks, 0);
+  if (worldComm()->getRank() != 0) return;
+  const double reference = lastGlobal(alm.results, "reaction_top_y");
+  EXPECT_NEAR(lastGlobal(mpc.results, "reaction_top_y"), reference, 1e-9 * std::abs(reference));
+  EXPECT_EQ(lastGlobal(mpc.results, "contact_active_nodes_cylinder"),
+            lastGlobal(alm.results, "contact_active_nodes_cylinder"));
 }
 
 // Coulomb's mu per node from a nodal variable of the mesh file: the imposed

@@ -195,6 +195,79 @@ TEST(FrictionalNode, RowsVanishAtSolutions) {
   EXPECT_EQ(frictionalState<3>(open, ContactState::Inactive, p).state, ContactState::Inactive);
 }
 
+// MPC decides by reactions and gaps, without the penalty augmentation:
+// where the two rules disagree on the way to a solution, each does what it
+// says (and at solutions both agree, RowsVanishAtSolutions above).
+TEST(FrictionalNode, MultiPointConstraintStatesComeFromReactionsAndGaps) {
+  // Normal: a tied node in tension (lambda_n > 0) that still penetrates.
+  EXPECT_EQ(mpcContactState(true, 0.5, -1.0), ContactState::Inactive);
+  EXPECT_EQ(almContactState(0.5, -1.0, 1.0, 1.0, 10.0), ContactState::Active);  // eps_n g~ / D wins
+  EXPECT_EQ(mpcContactState(true, -0.5, 1.0), ContactState::Active);           // compressed: stays tied
+  EXPECT_EQ(mpcContactState(false, 0.0, -1e-9), ContactState::Active);         // touches: tied
+  EXPECT_EQ(mpcContactState(false, 0.0, 1e-9), ContactState::Inactive);
+
+  auto alm = coulombParameters(0.4), mpc = alm;
+  mpc.multiPointConstraint = true;
+  FrictionalNodeInput<3> in;
+  in.normal = {0.0, 0.0, -1.0};
+  in.D = 0.5;
+  // Pressure 5 (k lambda_n = -5), tangential reaction 1 < mu p = 2, but a
+  // large slip of the iterate: ALM's augmented test (k beta + eps_tau w / D)
+  // slips, MPC's reaction test sticks.
+  const double ktD = alm.k * alm.thickness * in.D;
+  in.residual = {ktD * 1.0 / alm.k, 0.0, ktD * 5.0 / alm.k};
+  in.slip = {0.5, 0.0, 0.0};
+  in.gap = 0.0;
+  EXPECT_EQ(frictionalState<3>(in, ContactState::Stick, alm).state, kSlip);  // |1 + 5 × 0.5 / 0.5| > 2
+  EXPECT_EQ(frictionalState<3>(in, ContactState::Stick, mpc).state, ContactState::Stick);  // |1| < 2
+  // Penetrating: ALM's threshold from lambdā_n = -5 - 50 × 0.2 / 0.5, MPC's from the reaction.
+  in.gap = -0.2;
+  EXPECT_NEAR(frictionalState<3>(in, ContactState::Stick, alm).threshold, 0.4 * 25.0, 1e-12);
+  EXPECT_NEAR(frictionalState<3>(in, ContactState::Stick, mpc).threshold, 0.4 * 5.0, 1e-12);
+  // A tangential reaction above mu p slips under MPC too.
+  in.residual[0] = ktD * 2.5 / alm.k;
+  in.slip = {};
+  EXPECT_EQ(frictionalState<3>(in, ContactState::Stick, mpc).state, kSlip);
+  // The slip rows carry the Coulomb force of the reaction: zero at a slip
+  // solution (traction mu p along the slip), and their derivatives are exact.
+  in.residual = {ktD * 2.0 / alm.k, 0.0, ktD * 5.0 / alm.k};
+  in.slip = {0.01, 0.0, 0.0};
+  in.gap = 0.0;
+  const auto rows = frictionalRows<3>(in, kSlip, mpc);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(rows.rows[c], 0.0, 1e-12) << c;
+  checkDerivatives<3>(genericNode<3>(), kSlip, mpc);
+  checkDerivatives<2>(genericNode<2>(), kSlip, mpc);
+}
+
+// Slip Reset Frequency < 0: the slip rows take the direction of the node's
+// slip in the last converged step (fixed for the step), not the augmented
+// multiplier's; exact derivatives (through the frame, i.e. n).
+TEST(FrictionalNode, SlipDirectionFromTheSlip) {
+  auto p = coulombParameters(0.4);
+  p.slipDirectionFromSlip = true;
+  FrictionalNodeInput<3> in;
+  in.normal = {0.0, 0.0, -1.0};
+  in.D = 0.5;
+  const double tD = p.thickness * in.D;
+  in.residual = {tD * 1.0, tD * 1.5, tD * 5.0};  // traction (1, 1.5) tangential, pressure 5
+  in.lastSlip = {0.0, 0.03, 0.0};                 // the last step slipped along +y
+  in.slip = {0.02, 0.0, 0.0};                     // this iterate's slip: not the direction
+  const auto rows = frictionalRows<3>(in, kSlip, p);
+  // Frame of n = -z: the gap slot is z; the tangent slots x and y carry
+  // b.r_F - t D Θ d with d = (0, 1): (tD 1, tD (1.5 - 2)).
+  EXPECT_NEAR(std::abs(rows.rows[0]), tD * 1.0, 1e-12);
+  EXPECT_NEAR(std::abs(rows.rows[1]), tD * 0.5, 1e-12);
+  p.slipDirectionFromSlip = false;  // the augmented direction mixes in the traction's x part
+  EXPECT_GT(std::abs(std::abs(frictionalRows<3>(in, kSlip, p).rows[0]) - tD), 0.1 * tD);
+  p.slipDirectionFromSlip = true;
+  auto node3 = genericNode<3>();
+  node3.lastSlip = {0.02, -0.01, 0.005};
+  checkDerivatives<3>(node3, kSlip, p);
+  auto node2 = genericNode<2>();
+  node2.lastSlip = {-0.02, 0.01};
+  checkDerivatives<2>(node2, kSlip, p);
+}
+
 TEST(FrictionalNode, RejectsBadInput) {
   auto p = coulombParameters(0.3);
   auto in = genericNode<2>();

@@ -32,6 +32,11 @@ ContactState almContactState(double lambdaN, double weightedGap, double D, doubl
                                                                            : ContactState::Inactive;
 }
 
+ContactState mpcContactState(bool wasActive, double lambdaN, double weightedGap) {
+  const double decisive = wasActive ? lambdaN : weightedGap;
+  return decisive <= 0.0 ? ContactState::Active : ContactState::Inactive;
+}
+
 ContactState penaltyContactState(double weightedGap) {
   return weightedGap <= 0.0 ? ContactState::Active : ContactState::Inactive;
 }

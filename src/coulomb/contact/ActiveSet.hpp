@@ -53,6 +53,13 @@ double augmentedNormalMultiplier(double lambdaN, double weightedGap, double D, d
 /// @brief ALM update rule (4.73/4.74): Active iff lambdā_n <= 0.
 ContactState almContactState(double lambdaN, double weightedGap, double D, double k, double epsN);
 
+/// @brief MPC update rule (no penalty, no augmentation): a tied node stays
+/// tied while its reaction is compressive (lambda_n <= 0, recovered from the
+/// constraint force), an untied node is tied when it touches or penetrates
+/// (g~ <= 0). The same as almContactState at converged states (an active
+/// node has g~ = 0, an inactive one lambda_n = 0); different on the way.
+ContactState mpcContactState(bool wasActive, double lambdaN, double weightedGap);
+
 /// @brief Penalty update rule (4.74): Active iff g~ <= 0 (threshold eps_n g~).
 ContactState penaltyContactState(double weightedGap);
 

@@ -50,9 +50,9 @@ bool ContactModel::anyFrictional() const {
 }
 
 bool ContactModel::needsNonsymmetricSolver() const {
-  // ALM: the condensed rows; penalty friction: the slip branch's tangent.
+  // ALM and MPC: the condensed rows; penalty friction: the slip branch's tangent.
   for (const auto& pair : pairs_)
-    if (pair->settings().formulation == ContactFormulation::ALM || pair->frictional()) return true;
+    if (pair->settings().formulation != ContactFormulation::Penalty || pair->frictional()) return true;
   return false;
 }
 

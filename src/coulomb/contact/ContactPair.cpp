@@ -127,7 +127,7 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
   lambdaN_.assign(owned, 0.0);
   pressure_.assign(owned, 0.0);
   traction_.assign(owned, {0.0, 0.0, 0.0});
-  weightedSlip_ = slipIncrement_ = stepStartAccumulatedSlip_ = stepStartTraction_ = traction_;
+  weightedSlip_ = slipIncrement_ = stepStartAccumulatedSlip_ = stepStartTraction_ = lastStepSlip_ = traction_;
   openedInStep_.assign(owned, 0);
   beginStep();
 }
@@ -140,6 +140,8 @@ void ContactPair::beginStep() {
   // operators and coordinates are the D^t, M^t, x^t of the slip (4.69).
   stepStartMortar_ = mortar_;
   stepStartX_ = x_.x.empty() ? referenceConfiguration(*interface_) : x_;
+  if (!restored_) lastStepSlip_ = weightedSlip_;  // a retry keeps the direction of the converged step
+  restored_ = false;
   for (std::size_t i = 0; i < state_.size(); ++i) {
     for (int c = 0; c < 3; ++c) stepStartAccumulatedSlip_[i][c] += slipIncrement_[i][c];
     slipIncrement_[i] = weightedSlip_[i] = {0.0, 0.0, 0.0};
@@ -168,6 +170,7 @@ void ContactPair::restoreStep() {
   std::fill(openedInStep_.begin(), openedInStep_.end(), 0);
   --steps_;
   searched_ = false;
+  restored_ = true;
 }
 
 std::string ContactPair::penetrationFailure(long long node, double gap, double D) const {
@@ -263,7 +266,9 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
   // nodes — the rest of a large slave surface costs a plain double pass.
   searchAndIntegrate(u);
   if (frictional()) return updateFrictional(bulkResidual, updateSet, out);
-  const bool alm = settings_.formulation == ContactFormulation::ALM;
+  // ALM and MPC share the condensed rows (the MPC's ties); they differ in the state rule.
+  const bool alm = settings_.formulation != ContactFormulation::Penalty;
+  const bool mpc = settings_.formulation == ContactFormulation::MPC;
   const auto r = bulkResidual.getData(0);
   const auto& map = *dofMap_;
   auto row = [this](long long node, int c) { return dofRow(node, c); };
@@ -301,7 +306,9 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
         }
         lambdaN = projected / (k_ * t * D * frame.normFree);
       }
-      const ContactState rule = frame.usable ? almContactState(lambdaN, gap, D, k_, epsN_) : ContactState::Inactive;
+      const ContactState rule = !frame.usable ? ContactState::Inactive
+                                : mpc       ? mpcContactState(previous == ContactState::Active, lambdaN, gap)
+                                            : almContactState(lambdaN, gap, D, k_, epsN_);
       if (updateSet) state = rule;
       else if (rule != state) ++summary.violations;
       if (!frame.usable) state = ContactState::Inactive;

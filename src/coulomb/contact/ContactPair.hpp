@@ -202,6 +202,10 @@ private:
   std::vector<char> openedInStep_;  ///< active -> inactive at some iterate of this step (FrictionalNodeInput::reclosing)
   std::vector<std::array<double, 3>> traction_, stepStartTraction_, weightedSlip_, slipIncrement_,
       stepStartAccumulatedSlip_;
+  /// The weighted slip of the last converged step (the slip direction of
+  /// Slip Reset Frequency < 0); kept through a restoreStep().
+  std::vector<std::array<double, 3>> lastStepSlip_;
+  bool restored_ = false;  ///< restoreStep() ran since the last beginStep()
 };
 
 }  // namespace coulomb::contact

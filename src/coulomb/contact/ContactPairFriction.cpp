@@ -25,10 +25,12 @@ namespace {
 template <int dim>
 FrictionalNodeInput<dim> narrow(const std::array<double, 3>& r, const std::array<double, 3>& n,
                                 const std::array<double, 3>& w, double D, double gap,
-                                const std::array<bool, 3>& prescribed, bool reclosing = false) {
+                                const std::array<bool, 3>& prescribed, bool reclosing = false,
+                                const std::array<double, 3>& lastSlip = {}) {
   FrictionalNodeInput<dim> in;
   in.reclosing = reclosing;
   for (int c = 0; c < dim; ++c) {
+    in.lastSlip[c] = lastSlip[c];
     in.residual[c] = r[c];
     in.normal[c] = n[c];
     in.slip[c] = w[c];
@@ -84,9 +86,9 @@ State decide(int dim, const std::array<double, 3>& r, const std::array<double, 3
 
 Rows rowsOf(int dim, const std::array<double, 3>& r, const std::array<double, 3>& n, const std::array<double, 3>& w,
             double D, double gap, const std::array<bool, 3>& prescribed, ContactState state,
-            const FrictionalParameters& p) {
-  if (dim == 2) return widenRows<2>(frictionalRows<2>(narrow<2>(r, n, w, D, gap, prescribed), state, p));
-  return widenRows<3>(frictionalRows<3>(narrow<3>(r, n, w, D, gap, prescribed), state, p));
+            const FrictionalParameters& p, const std::array<double, 3>& lastSlip) {
+  if (dim == 2) return widenRows<2>(frictionalRows<2>(narrow<2>(r, n, w, D, gap, prescribed, false, lastSlip), state, p));
+  return widenRows<3>(frictionalRows<3>(narrow<3>(r, n, w, D, gap, prescribed, false, lastSlip), state, p));
 }
 
 void addScaled(DerivativeRow& to, const DerivativeRow& from, double scale) {
@@ -113,6 +115,8 @@ FrictionalParameters ContactPair::frictionalParameters() const {
   p.slipAugmentation = settings_.slipAugmentation;
   p.slipThreshold = settings_.slipThreshold;
   p.law = settings_.friction;
+  p.multiPointConstraint = settings_.formulation == ContactFormulation::MPC;
+  p.slipDirectionFromSlip = settings_.slipResetFrequency < 0;
   return p;
 }
 
@@ -249,7 +253,7 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
     const auto w = weightedSlip(*entry, &dw);
     const auto rf = residualAt(node);
     p.law.coefficient = settings_.frictionCoefficient(node);
-    const Rows k = rowsOf(dim_, rf, n, w, entry->D, entry->gap, prescribedOf(node), state_[i], p);
+    const Rows k = rowsOf(dim_, rf, n, w, entry->D, entry->gap, prescribedOf(node), state_[i], p, lastStepSlip_[i]);
     if (!k.usable) continue;
 
     // Forces and residual figures: the recovered traction acts on the slave.

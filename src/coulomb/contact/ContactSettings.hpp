@@ -16,8 +16,12 @@ namespace coulomb::contact {
 
 /// ALM: Lagrange multipliers on the slave nodes, condensed (exact
 /// non-penetration at convergence). Penalty: displacement only, pressure
-/// eps_n <-g~> / D (penetration ~ p / eps_n).
-enum class ContactFormulation { ALM, Penalty };
+/// eps_n <-g~> / D (penetration ~ p / eps_n). MPC: multipoint constraints —
+/// the slave node tied to the master by the mortar relation (stick: all
+/// directions; slip: the normal one, with the Coulomb force of the recovered
+/// reaction), states decided by reactions and gaps without penalty
+/// (docs/architecture.md, "MPC").
+enum class ContactFormulation { ALM, Penalty, MPC };
 
 /// Full: the active set is updated at every Newton iteration. Simplified:
 /// only at the first two evaluations of a load step (the predictor and the
@@ -55,7 +59,9 @@ struct ContactPairSettings {
   double tangentFactor = 1.0;         ///< kappa: eps_tau = kappa eps_n
   double slipThreshold = 0.02;        ///< hysteresis of the slip -> stick transition
   double slipAugmentation = 1.0;      ///< alpha of the augmented tangential multiplier of slipping nodes
-  int slipResetFrequency = 1;         ///< slipping nodes restart as stick every n steps (0: never)
+  /// Slipping nodes restart as stick every n steps (0: never; < 0: never, and
+  /// a slipping node's direction is that of its slip in the last converged step).
+  int slipResetFrequency = 1;
   SlipMeasure slipMeasure = SlipMeasure::Objective;
   /// Objective slip only where the operators changed over the step:
   /// |D - Dᵗ| + sum |M - Mᵗ| > operatorThreshold × (D + sum |M|), else the

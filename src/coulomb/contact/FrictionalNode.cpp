@@ -59,7 +59,10 @@ NodeTerms<dim, S> nodeTerms(const std::array<S, dim>& r, const std::array<S, dim
     terms.slip[s] = ws;
     for (int c = 0; c < dim; ++c) terms.lambda[c] += terms.beta[s] * f.b[s][c];
   }
-  terms.augmentedNormal = p.k * terms.lambdaN + p.epsN * gap / D;
+  // MPC: the reaction of a tied node, the gap of an untied one (no augmentation).
+  terms.augmentedNormal = !p.multiPointConstraint ? S(p.k * terms.lambdaN + p.epsN * gap / D)
+                          : recover               ? S(p.k * terms.lambdaN)
+                                                  : S(p.epsN * gap / D);
   return terms;
 }
 
@@ -81,6 +84,26 @@ S augmentedTangent(const NodeTerms<dim, S>& t, const S& D, double alpha, const F
   const S norm = sqrt(norm2);
   for (int c = 0; c < dim; ++c) direction[c] = bar[c] / norm;
   return norm;
+}
+
+/// The unit direction of the tangential part of `slip` (a fixed vector) in
+/// the frame's tangent slots, written into `direction` unless that part is zero.
+template <int dim, class S>
+void fixedDirection(const NodeTerms<dim, S>& t, const std::array<double, dim>& slip, std::array<S, dim>& direction) {
+  using std::sqrt;
+  std::array<S, dim> q{};
+  S norm2 = 0.0;
+  for (int i = 0; i < t.frame.numFree; ++i) {
+    const int s = t.frame.free[i];
+    if (s == t.frame.gapSlot) continue;
+    for (int c = 0; c < dim; ++c) q[s] += t.frame.b[s][c] * slip[c];
+    norm2 += q[s] * q[s];
+  }
+  if (valueOf(norm2) <= 0.0) return;
+  const S norm = sqrt(norm2);
+  direction = {};
+  for (int i = 0; i < t.frame.numFree; ++i)
+    if (t.frame.free[i] != t.frame.gapSlot) direction[t.frame.free[i]] = q[t.frame.free[i]] / norm;
 }
 
 void checkParameters(double D, const FrictionalParameters& p) {
@@ -105,10 +128,12 @@ FrictionalNodeState<dim> frictionalState(const FrictionalNodeInput<dim>& in, Con
   if (terms.augmentedNormal > 0.0) return out;  // (4.73/4.74): the gap zone
   out.threshold = frictionThreshold(p.law, terms.augmentedNormal);
   // (4.77): a stick node (or one that just closed) is tested with the full
-  // augmentation, a slipping one with the slip augmentation alpha.
+  // augmentation (MPC: its reaction alone), a slipping one with the slip
+  // augmentation alpha.
   std::array<double, dim> direction{};
-  out.tangentNorm = augmentedTangent<dim, double>(terms, in.D, previous == kSlip ? p.slipAugmentation : 1.0, p,
-                                                  direction);
+  const double stickAugmentation = p.multiPointConstraint ? 0.0 : 1.0;
+  out.tangentNorm = augmentedTangent<dim, double>(terms, in.D, previous == kSlip ? p.slipAugmentation : stickAugmentation,
+                                                  p, direction);
   // A node that just closed has no recovered traction: the stick guess
   // (Algorithm 3, line 6), deterministic whatever the round-off of its tiny
   // first threshold; one that closes again within the step is judged on its
@@ -147,6 +172,7 @@ FrictionalNodeRows<dim> frictionalRows(const FrictionalNodeInput<dim>& in, Conta
   Fad threshold = 0.0;
   if (state == kSlip) {
     augmentedTangent<dim, Fad>(terms, D, p.slipAugmentation, p, direction);
+    if (p.slipDirectionFromSlip) fixedDirection<dim, Fad>(terms, in.lastSlip, direction);
     threshold = frictionThreshold(p.law, terms.augmentedNormal);
   }
   for (int i = 0; i < f.numFree; ++i) {

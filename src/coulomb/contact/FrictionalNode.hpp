@@ -46,6 +46,16 @@ struct FrictionalParameters {
   double slipAugmentation = 1.0;   ///< alpha > 0
   double slipThreshold = 0.02;     ///< hysteresis of the slip -> stick transition (stickSlipState)
   FrictionLaw law;
+  /// MPC: the same rows (ties), states without penalty: the normal decision
+  /// and the threshold from the reaction k lambda_n of a tied node (the gap
+  /// of an untied one), the stick -> slip test on the reaction |k beta|.
+  bool multiPointConstraint = false;
+  /// The slip rows take the direction of the node's slip in the last
+  /// converged step (FrictionalNodeInput::lastSlip, its tangential part), fixed
+  /// for the step — the seed's slip_step_reset_frequency < 0, tangents from
+  /// the weighted slip at the step start — instead of the augmented
+  /// multiplier's; the augmented one where that slip is zero.
+  bool slipDirectionFromSlip = false;
 };
 
 /// Number of inputs of the derivatives: r, n, w (dim each), D, g~.
@@ -61,6 +71,7 @@ struct FrictionalNodeInput {
   double D = 0.0;                      ///< D_j > 0
   double gap = 0.0;                    ///< weighted gap g~_j
   std::array<bool, dim> prescribed{};  ///< Dirichlet components of the node
+  std::array<double, dim> lastSlip{};  ///< weighted slip of the last converged step (slipDirectionFromSlip)
   /// The node opened earlier in this step: when it closes again it is judged
   /// on its augmented values instead of starting as stick (a closing node
   /// forced to stick inside a sliding zone can be pulled open by the tie and
