@@ -66,6 +66,7 @@ coulomb_bad_input(contact_friction_negative_coefficient "'Contact/Pairs/punch/Fr
 coulomb_bad_input(contact_friction_tresca_zero_threshold "'Contact/Pairs/punch/Tresca Threshold' must be > 0")
 coulomb_bad_input(contact_friction_unknown_law "'Contact/Pairs/punch/Friction Law'")
 coulomb_bad_input(contact_friction_zero_tangent_factor "'Contact/Pairs/punch/Tangent Factor'")
+coulomb_bad_input(contact_friction_penalty_negative_reset "'Contact/Pairs/punch/Slip Reset Frequency' < 0.*ALM and MPC")
 coulomb_bad_input(contact_saddle_point_frictional "'Contact/System Form' = Saddle Point.*'Contact/Pairs/punch' is frictional")
 coulomb_bad_input(contact_saddle_point_iterative_solver "'Linear Solver/Linear Solver Type' must be Amesos2")
 coulomb_bad_input(dirichlet_rotation_with_value "'Dirichlet Conditions/turn/Rotation Angle'.*no 'Value'")

@@ -185,6 +185,16 @@ TEST(TripletAssembly, MatrixSumReusesTheMatrixWhenThePatternRepeats) {
   EXPECT_EQ(fifth.get(), fourth.get());
   EXPECT_EQ(sum.reuses(), 2);
   expectSum(fifth, lower);
+  // More entries than the memory held so far (K's pattern + 2 %): it grows.
+  std::vector<linalg::MatrixTriplet> dense;
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
+    const GlobalOrdinal g = map->getGlobalElement(static_cast<LocalOrdinal>(i));
+    for (GlobalOrdinal c = 0; c < n; c += 2) dense.push_back({g, c, 0.1 * static_cast<double>(g + c)});
+  }
+  auto sixth = sum.add(*K, dense);
+  expectSum(sixth, dense);
+  auto seventh = sum.add(*K, s1);  // and fits again afterwards
+  expectSum(seventh, s1);
 }
 
 }  // namespace coulomb::test

@@ -120,6 +120,7 @@ void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool free
 }
 
 void ContactModel::condenseResidual(Vector& residual) const {
+  COULOMB_REQUIRE(!saddlePoint(), "internal: condenseResidual in the saddle-point form");
   if (!contributes_) return;
   linalg::addEntries(contributions_.contactResidual, residual);
   Vector copy(residual, Teuchos::Copy);
@@ -128,6 +129,7 @@ void ContactModel::condenseResidual(Vector& residual) const {
 }
 
 Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMatrix>& bulkTangent) const {
+  COULOMB_REQUIRE(!saddlePoint(), "internal: condensedTangent in the saddle-point form");
   if (!contributes_) return bulkTangent;
   static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact condensed tangent");
   Teuchos::TimeMonitor scope(*timer);

@@ -140,7 +140,12 @@ void ContactPair::beginStep() {
   // operators and coordinates are the D^t, M^t, x^t of the slip (4.69).
   stepStartMortar_ = mortar_;
   stepStartX_ = x_.x.empty() ? referenceConfiguration(*interface_) : x_;
-  if (!restored_) lastStepSlip_ = weightedSlip_;  // a retry keeps the direction of the converged step
+  // The direction of Slip Reset Frequency < 0: the converged slip of the
+  // nodes that slipped (a sticking node's slip is round-off, an open one's
+  // its approach); a retry keeps that of the converged step.
+  if (!restored_)
+    for (std::size_t i = 0; i < state_.size(); ++i)
+      lastStepSlip_[i] = state_[i] == kSlip ? weightedSlip_[i] : std::array<double, 3>{0.0, 0.0, 0.0};
   restored_ = false;
   for (std::size_t i = 0; i < state_.size(); ++i) {
     for (int c = 0; c < 3; ++c) stepStartAccumulatedSlip_[i][c] += slipIncrement_[i][c];

@@ -170,6 +170,9 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
     COULOMB_REQUIRE(s.friction.type == FrictionLawType::Tresca || !p.isParameter("Tresca Threshold"),
                     where << "Tresca Threshold' is given but 'Friction Law' is not Tresca");
     COULOMB_REQUIRE(s.slipThreshold < 1.0, where << "Slip Threshold' must be < 1, got " << s.slipThreshold);
+    COULOMB_REQUIRE(s.slipResetFrequency >= 0 || s.formulation != ContactFormulation::Penalty,
+                    where << "Slip Reset Frequency' < 0 (slip direction from the last step's slip) is for ALM and "
+                             "MPC pairs; the penalty traction takes its direction from its return map");
     COULOMB_REQUIRE(s.slave != s.master, "deck: 'Contact/Pairs/" << name << "' names side set '" << s.slave
                                                                   << "' as both Slave and Master");
     COULOMB_REQUIRE(settings.systemForm == ContactSystemForm::Condensed ||
