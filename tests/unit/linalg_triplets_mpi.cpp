@@ -195,6 +195,19 @@ TEST(TripletAssembly, MatrixSumReusesTheMatrixWhenThePatternRepeats) {
   expectSum(sixth, dense);
   auto seventh = sum.add(*K, s1);  // and fits again afterwards
   expectSum(seventh, s1);
+  // The same columns as s1 on every rank, more entries per row: a new
+  // pattern that keeps the column map and importer of the last result.
+  std::vector<linalg::MatrixTriplet> sameColumns;
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
+    const GlobalOrdinal g = map->getGlobalElement(static_cast<LocalOrdinal>(i));
+    for (std::size_t j = 0; j < map->getNodeNumElements(); ++j) {
+      const GlobalOrdinal h = map->getGlobalElement(static_cast<LocalOrdinal>(j));
+      sameColumns.push_back({g, (h + n / 2) % n, 0.01 * static_cast<double>(g + 2 * h + 1)});
+    }
+  }
+  auto eighth = sum.add(*K, sameColumns);
+  EXPECT_EQ(eighth->getColMap().get(), seventh->getColMap().get());
+  expectSum(eighth, sameColumns);
 }
 
 }  // namespace coulomb::test

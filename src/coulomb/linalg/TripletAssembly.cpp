@@ -266,20 +266,34 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
       }
     }
   }
+  // The column map and importer: K's when no rank has new columns (always
+  // in serial); the last result's when every rank has the same columns as
+  // then (a new pattern in the same columns: the set changed, the
+  // neighbourhood did not); else new ones (collective, costly at np > 1).
   Teuchos::RCP<const Map> columnMap = kColumns;
-  if (anyNewColumns)
-    columnMap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
-                                     Teuchos::ArrayView<const GlobalOrdinal>(columnGids_), rowMap->getIndexBase(),
-                                     rowMap->getComm()));
+  Teuchos::RCP<const Import> importer = K.getGraph()->getImporter();
+  if (anyNewColumns) {
+    const bool sameColumns = !lastColumnMap_.is_null() && lastDomainMap_ == K.getDomainMap().get() &&
+                             columnGids_ == lastColumnGids_;
+    if (!anyRank(*rowMap->getComm(), !sameColumns)) {
+      columnMap = lastColumnMap_;
+      importer = lastImporter_;
+    } else {
+      columnMap = Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                       Teuchos::ArrayView<const GlobalOrdinal>(columnGids_), rowMap->getIndexBase(),
+                                       rowMap->getComm()));
+      importer = Teuchos::rcp(new Import(K.getDomainMap(), columnMap));
+    }
+  }
   const LocalMatrix local("K + S", static_cast<LocalOrdinal>(numRows),
                           static_cast<LocalOrdinal>(columnMap->getNodeNumElements()),
                           static_cast<typename LocalMatrix::size_type>(nnz), valueView, pointerView, indexView);
-  // The importer: K's when no rank has new columns (always in serial).
-  Teuchos::RCP<const Import> importer = K.getGraph()->getImporter();
-  if (anyNewColumns) importer = Teuchos::rcp(new Import(K.getDomainMap(), columnMap));
   last_ = Teuchos::rcp(new CrsMatrix(local, rowMap, columnMap, K.getDomainMap(), K.getRangeMap(), importer,
                                      Teuchos::null));
   lastColumnGids_ = columnGids_;
+  lastColumnMap_ = columnMap;
+  lastImporter_ = importer;
+  lastDomainMap_ = K.getDomainMap().get();
   return last_;
 }
 

@@ -68,6 +68,9 @@ private:
   std::vector<GlobalOrdinal> columnGids_;
   Teuchos::RCP<CrsMatrix> last_;
   std::vector<GlobalOrdinal> lastColumnGids_;
+  Teuchos::RCP<const Map> lastColumnMap_;   ///< the last result's column map ...
+  Teuchos::RCP<const Import> lastImporter_;  ///< ... and importer, reused for the same columns
+  const Map* lastDomainMap_ = nullptr;       ///< K's domain map then (the importer's source)
   int reuses_ = 0;
 };
 
