@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "coulomb/contact/ContactModel.hpp"
 #include "coulomb/contact/FrictionalNode.hpp"
 #include "coulomb/core/Error.hpp"
 
@@ -266,6 +267,30 @@ TEST(FrictionalNode, SlipDirectionFromTheSlip) {
   auto node2 = genericNode<2>();
   node2.lastSlip = {-0.02, 0.01};
   checkDerivatives<2>(node2, kSlip, p);
+}
+
+// The stick and slip groups of (4.78) and the tangential/normal ratio.
+TEST(FrictionConvergence, TangentialGroupsAndRatio) {
+  ContactSettings s;
+  s.stickRelativeTolerance = s.slipRelativeTolerance = 1e-6;
+  s.stickAbsoluteTolerance = s.slipAbsoluteTolerance = 1e-8;
+  s.tangentNormalRatio = 1e-4;
+  ContactIterationSummary summary;
+  summary.contactForce = 1000.0;
+  summary.tangentialForce = 300.0;
+  summary.stickResidual = 5e-3;  // > 1e-6 × 1000 + 1e-8
+  EXPECT_FALSE(summary.tangentialConverged(s));
+  summary.stickResidual = 5e-7;
+  summary.slipResidual = 2e-3;
+  EXPECT_FALSE(summary.tangentialConverged(s));
+  summary.slipResidual = 0.9e-3;
+  EXPECT_TRUE(summary.tangentialConverged(s));
+  // Negligible tangential forces: the groups are not asked.
+  summary.slipResidual = 1.0;
+  summary.tangentialForce = 0.09;
+  EXPECT_TRUE(summary.tangentialConverged(s));
+  summary.tangentialForce = 0.11;
+  EXPECT_FALSE(summary.tangentialConverged(s));
 }
 
 TEST(FrictionalNode, RejectsBadInput) {

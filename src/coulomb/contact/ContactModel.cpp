@@ -70,7 +70,7 @@ template <class UpdatePair>
 void ContactModel::updatePairs(bool freezeSet, UpdatePair&& updatePair) {
   contributions_ = ContactContributions();
   summary_ = ContactIterationSummary();
-  double normal2 = 0, force2 = 0, stick2 = 0, slip2 = 0;
+  double normal2 = 0, force2 = 0, stick2 = 0, slip2 = 0, tangential2 = 0;
   for (std::size_t p = 0; p < pairs_.size(); ++p) {
     // Simplified semi-smooth Newton: the set moves at the predictor and the first iterate only.
     const bool updateSet =
@@ -81,6 +81,7 @@ void ContactModel::updatePairs(bool freezeSet, UpdatePair&& updatePair) {
     force2 += pairSummaries_[p].contactForce2;
     stick2 += pairSummaries_[p].stickResidual2;
     slip2 += pairSummaries_[p].slipResidual2;
+    tangential2 += pairSummaries_[p].tangentialForce2;
     summary_.frictional = summary_.frictional || pairs_[p]->frictional();
   }
   ++updatesInStep_;
@@ -98,6 +99,7 @@ void ContactModel::updatePairs(bool freezeSet, UpdatePair&& updatePair) {
   summary_.contactForce = std::sqrt(force2);
   summary_.stickResidual = std::sqrt(stick2);
   summary_.slipResidual = std::sqrt(slip2);
+  summary_.tangentialForce = std::sqrt(tangential2);
 }
 
 void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool freezeSet) {

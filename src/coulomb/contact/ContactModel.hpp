@@ -26,13 +26,18 @@ struct ContactIterationSummary {
   double contactForce = 0;    ///< ||f_j|| over active slave nodes [force]
   double stickResidual = 0;   ///< ||stick rows|| (frictional pairs) [force]
   double slipResidual = 0;    ///< ||slip rows|| (frictional pairs) [force]
+  double tangentialForce = 0;  ///< ||tangential parts of f_j|| over active slave nodes [force]
   bool frictional = false;    ///< some pair has friction (the stick/slip columns are printed)
   /// The normal constraint test of ContactSettings.
   bool normalConverged(const ContactSettings& s) const {
     return normalResidual <= s.normalRelativeTolerance * contactForce + s.normalAbsoluteTolerance;
   }
-  /// The stick and slip tests of (4.78).
+  /// The stick and slip tests of (4.78); skipped while the tangential
+  /// forces are negligible against the contact forces (below the tangential /
+  /// normal ratio threshold: nearly frictionless contact, the seed's
+  /// normal-tangent ratio). The stick and slip rows stay in the residual test.
   bool tangentialConverged(const ContactSettings& s) const {
+    if (tangentialForce <= s.tangentNormalRatio * contactForce) return true;
     return stickResidual <= s.stickRelativeTolerance * contactForce + s.stickAbsoluteTolerance &&
            slipResidual <= s.slipRelativeTolerance * contactForce + s.slipAbsoluteTolerance;
   }

@@ -471,6 +471,7 @@ void ContactPair::reduceSummary(PairIterationSummary& summary) const {
                                 summary.slipResidual2};
   for (const auto* v : {&summary.slaveForce, &summary.normalForce, &summary.tangentialForce})
     values.insert(values.end(), v->begin(), v->end());
+  values.push_back(summary.tangentialForce2);
   std::vector<double> totals(values.size());
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(values.size()), values.data(), totals.data());
   summary.normalResidual2 = totals[0];
@@ -482,6 +483,7 @@ void ContactPair::reduceSummary(PairIterationSummary& summary) const {
     summary.normalForce[c] = totals[7 + c];
     summary.tangentialForce[c] = totals[10 + c];
   }
+  summary.tangentialForce2 = totals[13];
   long long counts[7] = {summary.violations,
                          static_cast<long long>(summary.activeSet.nodes),
                          static_cast<long long>(summary.activeSet.active),

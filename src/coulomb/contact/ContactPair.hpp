@@ -85,6 +85,7 @@ struct PairIterationSummary {
   double contactForce2 = 0;    ///< sum of |f_j|^2 over active slave nodes
   double stickResidual2 = 0;   ///< sum of the squared stick rows (frictional pairs)
   double slipResidual2 = 0;    ///< sum of the squared slip rows (frictional pairs)
+  double tangentialForce2 = 0;  ///< sum of |tangential part of f_j|^2 over active slave nodes (frictional pairs)
   std::array<double, 3> slaveForce{};  ///< total contact force on the slave body
   std::array<double, 3> normalForce{};  ///< its normal part, sum of the nodal normal forces
   std::array<double, 3> tangentialForce{};  ///< its tangential part

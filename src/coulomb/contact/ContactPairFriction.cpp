@@ -266,6 +266,7 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
       summary.normalForce[c] += normal;
       summary.tangentialForce[c] += force - normal;
       summary.contactForce2 += force * force;
+      summary.tangentialForce2 += (force - normal) * (force - normal);
     }
 
     // The explicit part of d(row)/dx: through n, w, D and g~ (the r part is tangentTransform).
@@ -443,6 +444,7 @@ PairIterationSummary ContactPair::updatePenaltyFrictional(bool updateSet, Contac
       summary.normalForce[c] += fn * n[c];
       summary.tangentialForce[c] += f.force[c] - fn * n[c];
       summary.contactForce2 += f.force[c] * f.force[c];
+      summary.tangentialForce2 += (f.force[c] - fn * n[c]) * (f.force[c] - fn * n[c]);
     }
     auto derivative = [&](int c) {
       DerivativeRow row;

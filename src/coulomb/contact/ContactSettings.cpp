@@ -38,6 +38,10 @@ void addValidContactParameters(ParameterList& valid) {
               io::positive());
   contact.set("Slip Absolute Tolerance", defaults.slipAbsoluteTolerance, "absolute part of the slip test [force]",
               io::positive());
+  contact.set("Tangential Normal Ratio", defaults.tangentNormalRatio,
+              "the stick and slip tests count as met while ||tangential contact forces|| <= this x ||contact forces|| "
+              "(negligible friction; the rows stay in the residual test)",
+              io::nonNegative());
   contact.set("System Form", "Condensed",
               "Condensed: multipliers eliminated, displacement-only Newton system (default); Saddle Point: the "
               "multipliers are Newton unknowns, solved by the direct solver (Amesos2) - a check of the condensation, "
@@ -115,6 +119,7 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
   settings.stickAbsoluteTolerance = io::valueOrDefault<double>(user, validContact, "Stick Absolute Tolerance");
   settings.slipRelativeTolerance = io::valueOrDefault<double>(user, validContact, "Slip Relative Tolerance");
   settings.slipAbsoluteTolerance = io::valueOrDefault<double>(user, validContact, "Slip Absolute Tolerance");
+  settings.tangentNormalRatio = io::valueOrDefault<double>(user, validContact, "Tangential Normal Ratio");
   settings.systemForm = io::valueOrDefault<std::string>(user, validContact, "System Form") == "Saddle Point"
                             ? ContactSystemForm::SaddlePoint
                             : ContactSystemForm::Condensed;

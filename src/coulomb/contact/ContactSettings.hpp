@@ -98,6 +98,9 @@ struct ContactSettings {
   double stickAbsoluteTolerance = 1e-8;
   double slipRelativeTolerance = 1e-6;
   double slipAbsoluteTolerance = 1e-8;
+  /// The stick and slip tests are skipped while ||tangential contact forces||
+  /// <= this × ||contact forces|| (tangential forces negligible).
+  double tangentNormalRatio = 1e-4;
 };
 
 /// @brief Valid parameters of "Contact" (added to the deck's list).
