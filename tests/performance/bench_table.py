@@ -1,6 +1,7 @@
 """The summary table the run_*.sh scripts print after their JSON lines.
 
-rows: the JSON objects of scripts/bench; cols: (title, getter(row), format).
+rows: the JSON objects of scripts/bench; cols: (title, getter, format), the
+getter a key of the row or a function of the row.
 "wall s" gets a * when the run was disturbed, "ccx wall s" CalculiX's status
 when it did not end ok.
 """
@@ -22,7 +23,7 @@ def ccx(row, key):
 
 
 def cell(row, get, fmt, name):
-    value = get(row)
+    value = row.get(get) if isinstance(get, str) else get(row)
     if value is None:
         return "-"
     try:

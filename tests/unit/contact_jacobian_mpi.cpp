@@ -150,28 +150,21 @@ double saddlePointDirectionalError(solver::Simulation& simulation, double offset
   auto& contact = *simulation.contact();
   const auto& map = contact.saddlePointMap();
   const auto dofMap = simulation.dofMap().ownedMap();
-  const std::size_t n = dofMap->getNodeNumElements();
   auto field = [&](double a, double b) {
     Vector v(map), u(dofMap);
-    auto vd = v.getDataNonConst(0);
-    for (std::size_t i = 0; i < map->getNodeNumElements(); ++i)
-      vd[i] = std::sin(a * static_cast<double>(map->getGlobalElement(static_cast<LocalOrdinal>(i))) + b);
     {
-      auto ud = u.getDataNonConst(0);
-      for (std::size_t i = 0; i < n; ++i) ud[i] = vd[i];
+      auto vd = v.getDataNonConst(0);
+      for (std::size_t i = 0; i < map->getNodeNumElements(); ++i)
+        vd[i] = std::sin(a * static_cast<double>(map->getGlobalElement(static_cast<LocalOrdinal>(i))) + b);
     }
+    contact::ContactModel::displacementPart(v, u);
     simulation.assembler().constraints().setPrescribedValues(0.0, u);  // no change of prescribed DoFs
-    const auto ud = u.getData(0);
-    for (std::size_t i = 0; i < n; ++i) vd[i] = ud[i];
+    contact::ContactModel::setDisplacementPart(u, v);
     return v;
   };
   auto evaluateAt = [&](const Vector& x, Vector& F, Teuchos::RCP<CrsMatrix>* J) {
     Vector u(dofMap), r(dofMap);
-    {
-      auto ud = u.getDataNonConst(0);
-      const auto xd = x.getData(0);
-      for (std::size_t i = 0; i < n; ++i) ud[i] = xd[i];
-    }
+    contact::ContactModel::displacementPart(x, u);
     simulation.assembler().assemble(1.0, u, &r, nullptr);
     contact.updateSaddlePoint(x, u, true);
     contact.saddlePointResidual(r, F);

@@ -95,6 +95,15 @@ struct ActiveSetSummary {
 /// Counts `state` (now) against `previous` into the summary.
 void countState(ActiveSetSummary& summary, ContactState state, ContactState previous);
 
+/// The state of a node at an iterate: the update rule's `rule` when the set
+/// is updated; else the frozen `previous` (simplified semi-smooth Newton),
+/// a disagreeing rule counted in `violations`.
+inline ContactState nextState(ContactState rule, ContactState previous, bool updateSet, long long& violations) {
+  if (updateSet) return rule;
+  if (rule != previous) ++violations;
+  return previous;
+}
+
 /// "nodes 10: active 4, inactive 6, changed 1"
 std::ostream& operator<<(std::ostream& out, const ActiveSetSummary& summary);
 

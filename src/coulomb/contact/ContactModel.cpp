@@ -1,5 +1,6 @@
 #include "coulomb/contact/ContactModel.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <unordered_map>
@@ -196,13 +197,21 @@ void ContactModel::updateSaddlePoint(const Vector& x, const Vector& u, bool free
   transform_ = Teuchos::null;
 }
 
+void ContactModel::displacementPart(const Vector& x, Vector& u) {
+  const auto from = x.getData(0);
+  auto to = u.getDataNonConst(0);
+  std::copy(from.begin(), from.begin() + to.size(), to.begin());
+}
+
+void ContactModel::setDisplacementPart(const Vector& u, Vector& x) {
+  const auto from = u.getData(0);
+  auto to = x.getDataNonConst(0);
+  std::copy(from.begin(), from.end(), to.begin());
+}
+
 void ContactModel::saddlePointResidual(const Vector& bulkResidual, Vector& f) const {
   f.putScalar(0.0);
-  {
-    auto out = f.getDataNonConst(0);
-    const auto r = bulkResidual.getData(0);
-    for (std::size_t i = 0; i < map_->getNodeNumElements(); ++i) out[i] = r[i];
-  }
+  setDisplacementPart(bulkResidual, f);
   linalg::addEntries(contributions_.contactResidual, f);
   linalg::addEntries(contributions_.multipliers.residual, f);
 }

@@ -78,6 +78,10 @@ public:
   /// DoF map's, in its order, so a displacement vector is the leading part of
   /// the local data) then the owned multiplier DoFs. Null when condensed.
   const Teuchos::RCP<const Map>& saddlePointMap() const { return saddlePointMap_; }
+  /// Saddle-point form: u := the displacement part of x (its leading local
+  /// entries), and the reverse (x's multiplier part untouched). No communication.
+  static void displacementPart(const Vector& x, Vector& u);
+  static void setDisplacementPart(const Vector& u, Vector& x);
   /// Collective, saddle-point form: the contact state at x = (u, z), `u` its
   /// displacement part (on the DoF map).
   void updateSaddlePoint(const Vector& x, const Vector& u, bool freezeSet = false);

@@ -291,9 +291,7 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
     if (entry == nullptr || entry->D <= minimumD_) {
       state_[i] = ContactState::Inactive;
       lambdaN_[i] = pressure_[i] = 0;
-      ++summary.activeSet.nodes;
-      ++summary.activeSet.inactive;
-      if (previous != state_[i]) ++summary.activeSet.changed;
+      countState(summary.activeSet, state_[i], previous);
       continue;
     }
     const double D = entry->D, gap = entry->gap;
@@ -314,20 +312,14 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
       const ContactState rule = !frame.usable ? ContactState::Inactive
                                 : mpc       ? mpcContactState(previous == ContactState::Active, lambdaN, gap)
                                             : almContactState(lambdaN, gap, D, k_, epsN_);
-      if (updateSet) state = rule;
-      else if (rule != state) ++summary.violations;
+      state = nextState(rule, previous, updateSet, summary.violations);
       if (!frame.usable) state = ContactState::Inactive;
       if (state == ContactState::Inactive) lambdaN = 0;
     } else {
-      const ContactState rule = penaltyContactState(gap);
-      if (updateSet) state = rule;
-      else if (rule != state) ++summary.violations;
+      state = nextState(penaltyContactState(gap), previous, updateSet, summary.violations);
     }
     state_[i] = state;
-    ++summary.activeSet.nodes;
-    if (state == ContactState::Active) ++summary.activeSet.active;
-    else ++summary.activeSet.inactive;
-    if (state != previous) ++summary.activeSet.changed;
+    countState(summary.activeSet, state, previous);
     if (state == ContactState::Active && failure.empty()) failure = penetrationFailure(node, gap, D);
     if (alm) {
       lambdaN_[i] = lambdaN;

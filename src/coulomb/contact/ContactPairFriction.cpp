@@ -224,11 +224,7 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
                        openedInStep_[i] != 0, p);
       weightedSlip_[i] = w;
       for (int c = 0; c < 3; ++c) slipIncrement_[i][c] = -w[c] / entry->D;  // the slave relative to the master
-      state = decided.state;
-      if (!updateSet) {
-        if (state != previous) ++summary.violations;
-        state = previous;
-      }
+      state = nextState(decided.state, previous, updateSet, summary.violations);
       if (state == ContactState::Inactive) decided = State{};
       if (isActive(state) && failure.empty()) failure = penetrationFailure(node, entry->gap, entry->D);
     }
@@ -407,11 +403,8 @@ PairIterationSummary ContactPair::updatePenaltyFrictional(bool updateSet, Contac
       weightedSlip_[i] = w;
       for (int c = 0; c < 3; ++c) slipIncrement_[i][c] = -w[c] / entry->D;
       p.law.coefficient = settings_.frictionCoefficient(node);
-      state = decide(normals_[s].n, w, i, entry->D, entry->gap, previous);
-      if (!updateSet) {
-        if (state != previous) ++summary.violations;
-        state = previous;
-      }
+      state = nextState(decide(normals_[s].n, w, i, entry->D, entry->gap, previous), previous, updateSet,
+                        summary.violations);
       if (isActive(state) && failure.empty()) failure = penetrationFailure(node, entry->gap, entry->D);
     }
     settleState(i, state, previous, summary);

@@ -82,17 +82,13 @@ PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::
     ContactState state = previous;
     if (usable[i]) {
       for (int c = 0; c < dim_; ++c) lambdaN += lambda[i][c] * normals_[s].n[c];
-      const ContactState rule = almContactState(lambdaN, entry->gap, entry->D, k_, epsN_);
-      if (updateSet) state = rule;
-      else if (rule != state) ++summary.violations;
+      state = nextState(almContactState(lambdaN, entry->gap, entry->D, k_, epsN_), previous, updateSet,
+                        summary.violations);
     } else {
       state = ContactState::Inactive;
     }
     state_[i] = state;
-    ++summary.activeSet.nodes;
-    if (state == ContactState::Active) ++summary.activeSet.active;
-    else ++summary.activeSet.inactive;
-    if (state != previous) ++summary.activeSet.changed;
+    countState(summary.activeSet, state, previous);
     if (state == ContactState::Active && failure.empty()) failure = penetrationFailure(node, entry->gap, entry->D);
     lambdaN_[i] = state == ContactState::Active ? lambdaN : 0.0;
     pressure_[i] = -k_ * lambdaN_[i];

@@ -110,9 +110,7 @@ void ModelEvaluator::evalContact(const Vector& x, Vector* f, const Teuchos::RCP<
   // Saddle-point form: x = (u, z), u the leading part of the local data.
   if (saddlePoint_) {
     if (displacement_.is_null()) displacement_ = Teuchos::rcp(new Vector(map_));
-    auto u = displacement_->getDataNonConst(0);
-    const auto data = x.getData(0);
-    for (std::size_t i = 0; i < map_->getNodeNumElements(); ++i) u[i] = data[i];
+    contact::ContactModel::displacementPart(x, *displacement_);
   }
   const Vector& u = saddlePoint_ ? *displacement_ : x;
   if (anyRank(*map_->getComm(), local)) {

@@ -164,16 +164,9 @@ NewtonReport Simulation::solve(Vector& trial) {
   // Saddle-point form: x = (u, z), the multipliers starting from the last
   // converged step's; u is the leading part of the local data.
   Vector x(*saddlePointState_, Teuchos::Copy);
-  const std::size_t n = dofs_->ownedMap()->getNodeNumElements();
-  {
-    auto xd = x.getDataNonConst(0);
-    const auto ud = trial.getData(0);
-    for (std::size_t i = 0; i < n; ++i) xd[i] = ud[i];
-  }
+  contact::ContactModel::setDisplacementPart(trial, x);
   const NewtonReport report = solvers_->newton->solve(x);
-  const auto xd = x.getData(0);
-  auto ud = trial.getDataNonConst(0);
-  for (std::size_t i = 0; i < n; ++i) ud[i] = xd[i];
+  contact::ContactModel::displacementPart(x, trial);
   if (report.converged) saddlePointState_->assign(x);
   return report;
 }
