@@ -32,6 +32,17 @@ struct LoadedFace {
   int side;
 };
 
+/// Where an element's tangent rows go: owned rows straight into the owned
+/// tangent (columns translated from overlap-local to its column map), ghost
+/// rows into the small ghost-rows matrix that is exported afterwards. No
+/// overlap-sized copy of the tangent exists (one rank: no ghost rows at all).
+struct TangentTarget {
+  CrsMatrix* owned = nullptr;
+  CrsMatrix* ghost = nullptr;
+  const int* ownedColumn = nullptr;  ///< overlap-local DoF -> owned column-map local index
+  int numOwnedDofs = 0;
+};
+
 }  // namespace
 
 struct Assembler::Impl {
@@ -40,8 +51,10 @@ struct Assembler::Impl {
   ModelSettings model;
   std::vector<MaterialParameters> blockMaterial;
   std::vector<LoadedFace> loadedFaces;
-  Teuchos::RCP<const CrsGraph> overlapGraph, ownedGraph;
-  Teuchos::RCP<CrsMatrix> overlapMatrix;
+  Teuchos::RCP<const CrsGraph> ownedGraph;
+  Teuchos::RCP<CrsMatrix> ghostMatrix;
+  Teuchos::RCP<Export> ghostToOwned;
+  std::vector<int> ownedColumn;
   Teuchos::RCP<Vector> overlapResidual, overlapU;
   Teuchos::RCP<Import> ownedToOverlap;
   Teuchos::RCP<Export> overlapToOwned;
@@ -78,7 +91,7 @@ struct Assembler::Impl {
 
   /// Element loop of one block; returns true if an element inverted.
   template <CellType T>
-  bool assembleBlock(std::size_t b, double time, const double* u, double* r, CrsMatrix* K) const {
+  bool assembleBlock(std::size_t b, double time, const double* u, double* r, const TangentTarget& K) const {
     using Traits = CellTraits<T>;
     constexpr int n = Traits::nodes, nd = Traits::dofs;
     const auto& block = mesh.global().blocks[b];
@@ -87,25 +100,31 @@ struct Assembler::Impl {
     for (int d = 0; d < Traits::dim; ++d) force[d] = force3[d];
     std::array<double, nd> X{}, ue{}, re{};
     std::array<double, nd * nd> ke{};
-    std::array<int, nd> ldof{};
+    std::array<int, nd> ldof{}, column{};
     bool inverted = false;
     for (long long element : mesh.localElements(b)) {
       gather<T>(&block.connectivity[(element - block.firstElement) * n], u, X, ue, ldof);
-      const KernelStatus status = cellResidualTangent<T>(blockMaterial[b], X, ue, force, re, K ? &ke : nullptr);
+      const KernelStatus status = cellResidualTangent<T>(blockMaterial[b], X, ue, force, re, K.owned ? &ke : nullptr);
       if (status != KernelStatus::Ok) {
         inverted = true;
         continue;
       }
       for (int i = 0; i < nd; ++i) r[ldof[i]] += re[i];
-      if (!K) continue;
+      if (!K.owned) continue;
       // Prescribed DoFs: zero their rows and columns (identity set after export).
       for (int i = 0; i < nd; ++i) {
         if (!constraintsFlag(ldof[i])) continue;
         for (int j = 0; j < nd; ++j) ke[i * nd + j] = ke[j * nd + i] = 0.0;
       }
-      for (int i = 0; i < nd; ++i)
-        K->sumIntoLocalValues(ldof[i], Teuchos::ArrayView<const LocalOrdinal>(ldof.data(), nd),
-                              Teuchos::ArrayView<const Scalar>(&ke[i * nd], nd));
+      for (int j = 0; j < nd; ++j) column[j] = K.ownedColumn[ldof[j]];
+      for (int i = 0; i < nd; ++i) {
+        const Teuchos::ArrayView<const Scalar> values(&ke[i * nd], nd);
+        if (ldof[i] < K.numOwnedDofs)  // owned DoFs lead the overlap map: same local row
+          K.owned->sumIntoLocalValues(ldof[i], Teuchos::ArrayView<const LocalOrdinal>(column.data(), nd), values);
+        else
+          K.ghost->sumIntoLocalValues(ldof[i] - K.numOwnedDofs, Teuchos::ArrayView<const LocalOrdinal>(ldof.data(), nd),
+                                      values);
+      }
     }
     return inverted;
   }
@@ -227,9 +246,17 @@ Assembler::Assembler(const mesh::Mesh& mesh, const DofMap& dofs, const ModelSett
     failure = dispatchCell(global.blocks[b].cellType, [&](auto tag) { return impl_->checkReferenceBlock<decltype(tag)::value>(b); });
   throwIfAnyRankFailed(*mesh.comm(), failure);
 
-  impl_->overlapGraph = buildOverlapGraph(mesh, dofs);
   impl_->ownedGraph = buildOwnedGraph(mesh, dofs);
-  impl_->overlapMatrix = Teuchos::rcp(new CrsMatrix(impl_->overlapGraph));
+  const auto ghostGraph = buildGhostRowsGraph(mesh, dofs);
+  impl_->ghostMatrix = Teuchos::rcp(new CrsMatrix(ghostGraph));
+  impl_->ghostToOwned = Teuchos::rcp(new Export(ghostGraph->getRowMap(), dofs.ownedMap()));
+  // Every overlap DoF a local element couples to an owned DoF is in the owned
+  // graph's column map; the others (ghost-ghost couplings) never reach it.
+  const auto& overlapMap = *dofs.overlapMap();
+  const auto& columnMap = *impl_->ownedGraph->getColMap();
+  impl_->ownedColumn.resize(overlapMap.getNodeNumElements());
+  for (std::size_t i = 0; i < impl_->ownedColumn.size(); ++i)
+    impl_->ownedColumn[i] = columnMap.getLocalElement(overlapMap.getGlobalElement(static_cast<LocalOrdinal>(i)));
   impl_->overlapResidual = Teuchos::rcp(new Vector(dofs.overlapMap()));
   impl_->overlapU = Teuchos::rcp(new Vector(dofs.overlapMap()));
   impl_->ownedToOverlap = Teuchos::rcp(new Import(dofs.ownedMap(), dofs.overlapMap()));
@@ -251,11 +278,15 @@ AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residua
   Teuchos::TimeMonitor scope(*timer);
   m.overlapU->doImport(u, *m.ownedToOverlap, Tpetra::INSERT);
   m.overlapResidual->putScalar(0.0);
-  CrsMatrix* K = nullptr;
+  TangentTarget K;
   if (jacobian) {
-    m.overlapMatrix->resumeFill();
-    m.overlapMatrix->setAllToScalar(0.0);
-    K = m.overlapMatrix.get();
+    COULOMB_REQUIRE(jacobian->getColMap().get() == m.ownedGraph->getColMap().get(),
+                    "internal: the tangent must be made by Assembler::createMatrix");
+    jacobian->resumeFill();
+    jacobian->setAllToScalar(0.0);
+    m.ghostMatrix->resumeFill();
+    m.ghostMatrix->setAllToScalar(0.0);
+    K = {jacobian, m.ghostMatrix.get(), m.ownedColumn.data(), static_cast<int>(m.dofs.ownedMap()->getNodeNumElements())};
   }
   bool inverted = false;
   {
@@ -291,10 +322,10 @@ AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residua
     }
   }
   if (jacobian) {
-    m.overlapMatrix->fillComplete(m.dofs.ownedMap(), m.dofs.ownedMap());
-    jacobian->resumeFill();
-    jacobian->setAllToScalar(0.0);
-    jacobian->doExport(*m.overlapMatrix, *m.overlapToOwned, Tpetra::ADD);
+    m.ghostMatrix->fillComplete(m.dofs.ownedMap(), m.dofs.ownedMap());
+    // Ghost rows are owned elsewhere: the export only sends (no local
+    // same/permute rows), and ADD sums them into the owned rows.
+    jacobian->doExport(*m.ghostMatrix, *m.ghostToOwned, Tpetra::ADD);
     const Scalar one = 1.0;
     for (int dof : prescribed)  // owned DoFs lead the column map, so row index == column index
       jacobian->replaceLocalValues(dof, Teuchos::ArrayView<const LocalOrdinal>(&dof, 1),

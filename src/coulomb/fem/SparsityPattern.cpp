@@ -45,27 +45,39 @@ void sortRows(const Teuchos::ArrayRCP<size_t>& rowPointers, Teuchos::ArrayRCP<Lo
 
 }  // namespace
 
-Teuchos::RCP<const CrsGraph> buildOverlapGraph(const mesh::Mesh& mesh, const DofMap& dofs) {
+Teuchos::RCP<const CrsGraph> buildGhostRowsGraph(const mesh::Mesh& mesh, const DofMap& dofs) {
   const int rank = mesh.comm()->getRank();
   const int dim = dofs.dofsPerNode();
+  const int numOwned = mesh.numOwnedNodes();
+  const std::size_t numGhost = mesh.localNodes().size() - static_cast<std::size_t>(numOwned);
   const auto neighbours = nodeNeighbours(
-      mesh, mesh.localNodes().size(), [&](long long node) { return mesh.localNode(node); },
+      mesh, numGhost,
+      [&](long long node) {
+        const int local = mesh.localNode(node);
+        return local >= numOwned ? local - numOwned : -1;
+      },
       [&](long long element) { return mesh.elementOwner(element) == rank; });
-  Teuchos::ArrayRCP<size_t> rowPointers(neighbours.size() * dim + 1);
+  std::vector<GlobalOrdinal> rowGids;
+  rowGids.reserve(numGhost * dim);
+  for (std::size_t i = 0; i < numGhost; ++i)
+    for (int c = 0; c < dim; ++c) rowGids.push_back(DofMap::globalDof(mesh.localNodes()[numOwned + i], c, dim));
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  auto rowMap = Teuchos::rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(rowGids), 0, mesh.comm()));
+  Teuchos::ArrayRCP<size_t> rowPointers(numGhost * dim + 1);
   rowPointers[0] = 0;
-  for (std::size_t node = 0; node < neighbours.size(); ++node)
+  for (std::size_t node = 0; node < numGhost; ++node)
     for (int c = 0; c < dim; ++c) {
       const std::size_t row = node * dim + c;
       rowPointers[row + 1] = rowPointers[row] + neighbours[node].size() * dim;
     }
   Teuchos::ArrayRCP<LocalOrdinal> columns(rowPointers[rowPointers.size() - 1]);
   std::size_t k = 0;
-  for (std::size_t node = 0; node < neighbours.size(); ++node)
+  for (std::size_t node = 0; node < numGhost; ++node)
     for (int c = 0; c < dim; ++c)
       for (long long other : neighbours[node])
         for (int d = 0; d < dim; ++d) columns[k++] = dofs.localDof(mesh.localNode(other), d);
   sortRows(rowPointers, columns);
-  auto graph = Teuchos::rcp(new CrsGraph(dofs.overlapMap(), dofs.overlapMap(), rowPointers, columns));
+  auto graph = Teuchos::rcp(new CrsGraph(rowMap, dofs.overlapMap(), rowPointers, columns));
   graph->fillComplete(dofs.ownedMap(), dofs.ownedMap());
   return graph;
 }
