@@ -1,6 +1,6 @@
 // Frictional contact end to end (ALM, penalty and MPC, Coulomb and Tresca): patch tests on
-// the non-matching 2D patch mesh (stick, imposed slip, Tresca) and the
-// sliding punch (stick, partial slip, gross slip). Every run happens at
+// the 2D and 3D patch meshes, matching and non-matching (stick, imposed slip,
+// mu = 0, Tresca), and the sliding punch (stick, partial slip, gross slip). Every run happens at
 // np = 1, 2, 3 (ctest MpiTests.np*); the decks are the shipped ones, edited.
 #include <gtest/gtest.h>
 
@@ -165,6 +165,38 @@ TEST(FrictionPatch, ImposedSlipCarriesMuTimesPressure) {
   const double Q = lastGlobal(run.results, "contact_force_punch_x"), P = lastGlobal(run.results, "contact_force_punch_y");
   EXPECT_NEAR(Q / P, -kMu, 1e-3 * kMu);
   EXPECT_NEAR(lastGlobal(run.results, "reaction_top_x"), -Q, 1e-8 * kPressure);  // momentum balance
+}
+
+// Imposed slip on matching meshes (every punch node starts on a base node)
+// carries mu p per node as on the non-matching ones; with mu = 0 the same
+// slip carries no tangential traction at all (pure slip, automatic).
+TEST(FrictionPatch, ImposedSlipOnMatchingMeshesAndWithoutFriction) {
+  ShippedDeck matching("friction_patch_2d", "contact_patch2d.e"), frictionless("friction_patch_2d", "contact_patch2d.e");
+  matching.replace(shippedMesh("contact_patch2d.e"), shippedMesh("contact_patch2d_matching.e"));
+  frictionless.replace("<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0.3\"/>",
+                       "<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0\"/>");
+  auto slip = runDeckText("friction_patch_slip_matching", matching.text);
+  auto free = runDeckText("friction_patch_mu0", frictionless.text);
+  EXPECT_EQ(slip.summary.cutbacks, 0);
+  if (worldComm()->getRank() != 0) return;
+  const auto nodes = checkTractions(slip.results, [](double p) { return -kMu * p; }, 1e-8 * kPressure);
+  EXPECT_EQ(nodes.stick, 0);
+  EXPECT_GE(nodes.slip, 4);
+  // mu = 0 is frictionless (no tangential fields are written): every active
+  // node's multiplier lies along its normal, nothing resists the slip. (The
+  // total x force is not zero: the normals tilt by ~5e-3 at the deformed
+  // punch ends.)
+  const auto& state = lastNodal(free.results, "contact_state");
+  const auto &lx = lastNodal(free.results, "contact_multiplier_x"), &ly = lastNodal(free.results, "contact_multiplier_y");
+  const auto &nx = lastNodal(free.results, "contact_normal_x"), &ny = lastNodal(free.results, "contact_normal_y");
+  int active = 0;
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    if (state[i] < 0.5) continue;
+    ++active;
+    const double tangential = -lx[i] * ny[i] + ly[i] * nx[i], size = std::hypot(lx[i], ly[i]);
+    EXPECT_LT(std::abs(tangential), 1e-10 * size) << "node " << i + 1;
+  }
+  EXPECT_EQ(active, 8);
 }
 
 // Penalty friction (no multipliers, traction from a return map with the
@@ -437,26 +469,39 @@ TEST(FrictionFrameIndifference, ObjectiveSlipKeepsTheContactUnderRigidRotation) 
   EXPECT_GT(n.slip, 1e-7);
 }
 
-// 3D (xml/friction_patch_3d.xml): stick with tau = mu p / 2 is exact
-// across the non-matching HEX8 interface; the imposed slip along x carries
-// mu p against the slip at every node.
-TEST(FrictionPatch, ThreeDimensionalStickIsExactAndSlipCarriesMuP) {
-  const double p = kE * 0.01, tau = kMu * p / 2, gamma = tau / kShearModulus, s = 0.002;
-  ShippedDeck stickDeck("friction_patch_3d", "contact_patch3d.e");
-  stickDeck.replace("<Parameter name=\"Value\" type=\"double\" value=\"0.002\"/>", "");
-  stickDeck.replace("0.0078000000000000005", "0.0039000000000000003");
-  stickDeck.replace("-630.0}", "-315.0}");
-  stickDeck.replace("630.0}", "315.0}");
-  auto stick = runDeckText("friction_patch_3d_stick", stickDeck.text);
+// 3D (xml/friction_patch_3d.xml) with the shear halved: tau = mu p / 2 sticks.
+std::string stickPatch3dDeck(const std::string& mesh) {
+  ShippedDeck deck("friction_patch_3d", "contact_patch3d.e");
+  deck.replace("<Parameter name=\"Value\" type=\"double\" value=\"0.002\"/>", "");
+  deck.replace("0.0078000000000000005", "0.0039000000000000003");
+  deck.replace("-630.0}", "-315.0}");
+  deck.replace("630.0}", "315.0}");
+  deck.replace(shippedMesh("contact_patch3d.e"), shippedMesh(mesh));
+  return deck.text;
+}
+
+constexpr double kPatch3dShear = kMu * kE * 0.01 / 2;
+
+/// Largest nodal deviation from the homogeneous stick state of the 3D patch.
+double stickPatch3dError(const solver::Simulation& simulation) {
+  const double gamma = kPatch3dShear / kShearModulus;
   double error = 0;
-  forOwnedNodes(*stick.simulation, [&](long long, const double* X, const double* u) {
+  forOwnedNodes(simulation, [&](long long, const double* X, const double* u) {
     error = std::max({error, std::abs(u[0] - (0.003 * X[0] + gamma * X[2])), std::abs(u[1] - 0.003 * X[1]),
                       std::abs(u[2] + 0.01 * X[2])});
   });
+  return globalMax(error);
+}
+
+// 3D: stick with tau = mu p / 2 is exact across the non-matching HEX8
+// interface; the imposed slip along x carries mu p against the slip at every node.
+TEST(FrictionPatch, ThreeDimensionalStickIsExactAndSlipCarriesMuP) {
+  const double p = kE * 0.01, tau = kPatch3dShear, s = 0.002;
+  auto stick = runDeckText("friction_patch_3d_stick", stickPatch3dDeck("contact_patch3d.e"));
   // Solver tolerance, not discretisation: Newton stops at 1e-8 of the first
   // residual and GMRES at 1e-10 (measured 2e-11); a wrong contact state (a
   // node slipping or open) leaves errors of 1e-4 (seen while developing).
-  EXPECT_LT(globalMax(error), 1e-8 * 0.01);
+  EXPECT_LT(stickPatch3dError(*stick.simulation), 1e-8 * 0.01);
   auto slip = runDeck("friction_patch_3d");
   if (worldComm()->getRank() != 0) return;
   const double area = (1 + 0.003) * (1 + 0.003);  // tractions per current area
@@ -469,6 +514,38 @@ TEST(FrictionPatch, ThreeDimensionalStickIsExactAndSlipCarriesMuP) {
   const auto& state = lastNodal(slip.results, "contact_state");
   for (std::size_t i = 0; i < state.size(); ++i)
     if (state[i] > 0.5) EXPECT_GT(slipX[i], 0.5 * s) << "node " << i + 1;
+}
+
+// The same 3D stick on matching meshes (3 x 3 punch faces on 3 x 3 base
+// faces): every slave edge lies on a master edge, the clipping's degenerate
+// case. Its second step starts at equilibrium (the response is linear); with
+// a clipping tolerance inside the iterates' scatter (1e-10 of the face) the
+// objective slip's derivative flipped between Newton iterates and the step
+// cycled at 1e-9 of the contact force until it was cut back and failed.
+TEST(FrictionPatch, ThreeDimensionalStickIsExactOnMatchingMeshes) {
+  const double p = kE * 0.01, tau = kPatch3dShear;
+  auto stick = runDeckText("friction_patch_3d_stick_matching", stickPatch3dDeck("contact_patch3d_matching.e"));
+  EXPECT_EQ(stick.summary.cutbacks, 0);
+  for (int iterations : stick.summary.stepNewtonIterations) EXPECT_LE(iterations, 6);
+  EXPECT_LT(stickPatch3dError(*stick.simulation), 1e-8 * 0.01);
+  if (worldComm()->getRank() != 0) return;
+  const double area = (1 + 0.003) * (1 + 0.003);
+  const auto stuck = checkTractions(stick.results, [&](double) { return -tau / area; }, 1e-8 * p, 3);
+  EXPECT_EQ(stuck.stick, 16);
+  EXPECT_NEAR(lastGlobal(stick.results, "contact_force_punch_x"), -tau, 1e-8 * p);
+}
+
+// The imposed slip of xml/friction_patch_3d.xml on the matching mesh: mu p
+// against the slip at every node, as on the non-matching one.
+TEST(FrictionPatch, ThreeDimensionalSlipOnMatchingMeshesCarriesMuP) {
+  ShippedDeck deck("friction_patch_3d", "contact_patch3d.e");
+  deck.replace(shippedMesh("contact_patch3d.e"), shippedMesh("contact_patch3d_matching.e"));
+  auto slip = runDeckText("friction_patch_3d_slip_matching", deck.text);
+  EXPECT_EQ(slip.summary.cutbacks, 0);
+  if (worldComm()->getRank() != 0) return;
+  const auto nodes = checkTractions(slip.results, [](double pressure) { return -kMu * pressure; }, 1e-8 * kE * 0.01, 3);
+  EXPECT_EQ(nodes.stick, 0);
+  EXPECT_GE(nodes.slip, 9);
 }
 
 // Sliding punch (the peer benchmark's friction case, coarse shipped mesh):

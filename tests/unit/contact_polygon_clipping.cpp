@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <Sacado.hpp>
+#include <algorithm>
 #include <cmath>
 #include <initializer_list>
 
@@ -121,6 +122,26 @@ TEST(MortarClipping, AreaDerivativeWithFadScalar) {
     const Fad area = signedArea(c);
     EXPECT_NEAR(area.val(), 1.0 - 2.0 * (1.0 - r0) * (1.0 - r0), 1e-15);
     EXPECT_NEAR(area.dx(0), 4.0 * (1.0 - r0), 1e-14);
+  }
+}
+
+// A subject corner just outside a clip edge: inside the on-edge band
+// (kOnEdgeFactor merge tolerances) it stays a vertex of the result, the
+// polygon keeps its four corners and its derivative is that of the subject
+// alone (the matching-mesh case: iterates scatter about coincident edges and
+// must not switch the polygon's form); beyond the band it is cut off by the
+// intersection, which lies on the clip line.
+TEST(MortarClipping, VertexInTheOnEdgeBandStaysAVertex) {
+  const double tol = 1e-10;
+  for (double outside : {0.5 * kOnEdgeFactor * tol, 2.0 * kOnEdgeFactor * tol}) {
+    // The unit square with its corner (1, 1) moved outside the clip's edge x = 1.
+    const Polygon2<double> subject = polygon({{0.0, 0.0}, {1.0, 0.0}, {1.0 + outside, 1.0}, {0.0, 1.0}});
+    const Polygon2<double> c = clipConvexPolygon(subject, kUnitSquare, tol);
+    const bool inBand = outside < kOnEdgeFactor * tol;
+    EXPECT_EQ(c.size, 4) << outside;
+    double maxX = 0.0;
+    for (int k = 0; k < c.size; ++k) maxX = std::max(maxX, c.vertex[k][0]);
+    EXPECT_DOUBLE_EQ(maxX, inBand ? 1.0 + outside : 1.0) << outside;
   }
 }
 

@@ -53,13 +53,27 @@ Point2<T> vertexAverage(const Polygon2<T>& polygon);
 template <typename T>
 void makeCounterClockwise(Polygon2<T>& polygon);
 
+/// @brief Width of the band outside a clip edge in which a vertex counts as on
+/// the edge, in units of the merge tolerance. Why wider than the merge
+/// tolerance: on matching meshes slave and master edges coincide and Newton
+/// iterates scatter about that configuration by ~1e-10 of the face. With a
+/// band of 1e-10 of the face (the merge tolerance the 3D kernels use) the
+/// scatter crossed the band's outer edge, where the polygon jumps from "the
+/// vertex" to "the intersections": the objective slip, which multiplies dM
+/// by the coordinates, cycled at 1e-9 of the contact force and the 3D stick
+/// patch failed. At 100 × (1e-8 of the face) the scatter stays inside; the
+/// area a vertex in the band adds is below 1e-8 of the face. Widening the
+/// merge and area tolerances as well broke the finite-difference checks of
+/// the contact tangent on distorted meshes, so only the band is wide.
+constexpr double kOnEdgeFactor = 100.0;
+
 /// @brief subject ∩ clip by Sutherland–Hodgman.
 ///
 /// `clip` must be convex (either orientation); `subject` should be convex (a
 /// non-convex subject gives the correct area but may carry degenerate edges).
-/// The result keeps the orientation of `subject`. A vertex within `tolerance`
-/// (a length) of the inner side of a clip edge counts as inside; consecutive
-/// vertices closer than `tolerance` are merged. A result with fewer than three
+/// The result keeps the orientation of `subject`. A vertex within
+/// kOnEdgeFactor × `tolerance` (a length) of the inner side of a clip edge
+/// counts as inside; consecutive vertices closer than `tolerance` are merged. A result with fewer than three
 /// vertices (disjoint, or touching along an edge or at a point) is returned
 /// with size 0; a result of (near) zero area but three or more vertices is left
 /// to the caller's area test.
