@@ -1,6 +1,7 @@
 // Frictional contact end to end (ALM, penalty and MPC, Coulomb and Tresca): patch tests on
-// the 2D and 3D patch meshes, matching and non-matching (stick, imposed slip,
-// mu = 0, Tresca), and the sliding punch (stick, partial slip, gross slip). Every run happens at
+// the 2D patch meshes, matching and non-matching (stick, imposed slip, mu = 0,
+// Tresca; 3D: contact_friction_patch3d_mpi.cpp), and the sliding punch (stick,
+// partial slip, gross slip). Every run happens at
 // np = 1, 2, 3 (ctest MpiTests.np*); the decks are the shipped ones, edited.
 #include <gtest/gtest.h>
 
@@ -10,19 +11,13 @@
 #include <vector>
 
 #include "ContactTestSupport.hpp"
+#include "FrictionDeckSupport.hpp"
 #include "TestSupport.hpp"
 #include "coulomb/io/ExodusReader.hpp"
 #include "coulomb/io/ExodusWriter.hpp"
 
 namespace coulomb::test {
 namespace {
-
-// The homogeneous state of xml/friction_patch_2d.xml (see its comment).
-constexpr double kE = 210000, kNu = 0.3, kMu = 0.3;
-const double kPressure = kE * 0.01 / (1 - kNu * kNu);  // 2307.69
-const double kEpsXX = kNu / (1 - kNu) * 0.01;
-const double kShearModulus = kE / (2 * (1 + kNu));
-const double kSlip = 0.002;
 
 /// The slip deck turned into the stick variant: no slip, tau = mu p / 2.
 std::string stickPatchDeck() {
@@ -45,31 +40,6 @@ double homogeneousFieldError(const solver::Simulation& simulation, double shearT
   return globalMax(error);
 }
 
-struct ActiveNodes {
-  int stick = 0, slip = 0;
-};
-/// Counts the active slave nodes of the last step by state and checks each
-/// one's tangential traction (its magnitude, with the sign of its x
-/// component: the normals tilt slightly where the punch ends deform)
-/// against `expected(pressure)`.
-template <class Expected>
-ActiveNodes checkTractions(const io::ExodusResults& r, Expected expected, double tolerance, int dim = 2) {
-  const auto& state = lastNodal(r, "contact_state");
-  const auto& pressure = lastNodal(r, "contact_pressure");
-  const auto& tx = lastNodal(r, "contact_tangential_traction_x");
-  const auto& ty = lastNodal(r, "contact_tangential_traction_y");
-  const auto* tz = dim == 3 ? &lastNodal(r, "contact_tangential_traction_z") : nullptr;
-  ActiveNodes nodes;
-  for (std::size_t i = 0; i < state.size(); ++i) {
-    if (state[i] < 0.5) continue;
-    (state[i] > 1.5 ? nodes.stick : nodes.slip)++;
-    const double magnitude = std::sqrt(tx[i] * tx[i] + ty[i] * ty[i] + (tz ? (*tz)[i] * (*tz)[i] : 0.0));
-    const double traction = std::copysign(magnitude, tx[i]);
-    EXPECT_NEAR(traction, expected(pressure[i]), tolerance) << "node " << i + 1 << " pressure " << pressure[i];
-  }
-  return nodes;
-}
-
 /// The sliding punch of a variant (xml/friction_punch.xml edited): no
 /// cutback, at most 4 Newton iterations per increment on average, and in
 /// gross slip Q = mu P within 1 % (checked on rank 0). Prints the figures.
@@ -84,8 +54,6 @@ void expectGrossSlipAtMu(const ContactRun& sliding, const char* variant) {
   EXPECT_NEAR(Q / P, kMu, 0.01 * kMu);
   std::printf("%s sliding punch: Q/P %.5f, %d Newton iterations\n", variant, Q / P, newton);
 }
-
-const std::string kCoulombLaw = "<Parameter name=\"Friction Law\" type=\"string\" value=\"Coulomb\"/>";
 
 }  // namespace
 
@@ -171,17 +139,22 @@ TEST(FrictionPatch, ImposedSlipCarriesMuTimesPressure) {
 // carries mu p per node as on the non-matching ones; with mu = 0 the same
 // slip carries no tangential traction at all (pure slip, automatic).
 TEST(FrictionPatch, ImposedSlipOnMatchingMeshesAndWithoutFriction) {
-  ShippedDeck matching("friction_patch_2d", "contact_patch2d.e"), frictionless("friction_patch_2d", "contact_patch2d.e");
+  ShippedDeck matching("friction_patch_2d", "contact_patch2d.e"), mu0("friction_patch_2d", "contact_patch2d.e"),
+      noLaw("friction_patch_2d", "contact_patch2d.e");
   matching.replace(shippedMesh("contact_patch2d.e"), shippedMesh("contact_patch2d_matching.e"));
-  frictionless.replace("<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0.3\"/>",
-                       "<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0\"/>");
+  mu0.replace("<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0.3\"/>",
+              "<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0\"/>");
+  noLaw.replace(kCoulombLaw, "");
+  noLaw.replace("<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0.3\"/>", "");
   auto slip = runDeckText("friction_patch_slip_matching", matching.text);
-  auto free = runDeckText("friction_patch_mu0", frictionless.text);
+  auto free = runDeckText("friction_patch_mu0", mu0.text);
+  auto frictionless = runDeckText("friction_patch_frictionless", noLaw.text);
   EXPECT_EQ(slip.summary.cutbacks, 0);
+  EXPECT_EQ(free.summary.cutbacks, 0);
   if (worldComm()->getRank() != 0) return;
   const auto nodes = checkTractions(slip.results, [](double p) { return -kMu * p; }, 1e-8 * kPressure);
   EXPECT_EQ(nodes.stick, 0);
-  EXPECT_GE(nodes.slip, 4);
+  EXPECT_EQ(nodes.slip, 5);
   // mu = 0 is frictionless (no tangential fields are written): every active
   // node's multiplier lies along its normal, nothing resists the slip. (The
   // total x force is not zero: the normals tilt by ~5e-3 at the deformed
@@ -197,6 +170,9 @@ TEST(FrictionPatch, ImposedSlipOnMatchingMeshesAndWithoutFriction) {
     EXPECT_LT(std::abs(tangential), 1e-10 * size) << "node " << i + 1;
   }
   EXPECT_EQ(active, 8);
+  // ... and the run is the frictionless one (the deck without a friction law).
+  for (const char* name : {"reaction_top_x", "reaction_top_y", "contact_force_punch_x"})
+    EXPECT_NEAR(lastGlobal(free.results, name), lastGlobal(frictionless.results, name), 1e-9 * kPressure) << name;
 }
 
 // Penalty friction (no multipliers, traction from a return map with the
@@ -467,85 +443,6 @@ TEST(FrictionFrameIndifference, ObjectiveSlipKeepsTheContactUnderRigidRotation) 
   // The non-objective measure sees the rotation as slip.
   EXPECT_GT(n.traction, 1e-6 * n.peakPressure);
   EXPECT_GT(n.slip, 1e-7);
-}
-
-// 3D (xml/friction_patch_3d.xml) with the shear halved: tau = mu p / 2 sticks.
-std::string stickPatch3dDeck(const std::string& mesh) {
-  ShippedDeck deck("friction_patch_3d", "contact_patch3d.e");
-  deck.replace("<Parameter name=\"Value\" type=\"double\" value=\"0.002\"/>", "");
-  deck.replace("0.0078000000000000005", "0.0039000000000000003");
-  deck.replace("-630.0}", "-315.0}");
-  deck.replace("630.0}", "315.0}");
-  deck.replace(shippedMesh("contact_patch3d.e"), shippedMesh(mesh));
-  return deck.text;
-}
-
-constexpr double kPatch3dShear = kMu * kE * 0.01 / 2;
-
-/// Largest nodal deviation from the homogeneous stick state of the 3D patch.
-double stickPatch3dError(const solver::Simulation& simulation) {
-  const double gamma = kPatch3dShear / kShearModulus;
-  double error = 0;
-  forOwnedNodes(simulation, [&](long long, const double* X, const double* u) {
-    error = std::max({error, std::abs(u[0] - (0.003 * X[0] + gamma * X[2])), std::abs(u[1] - 0.003 * X[1]),
-                      std::abs(u[2] + 0.01 * X[2])});
-  });
-  return globalMax(error);
-}
-
-// 3D: stick with tau = mu p / 2 is exact across the non-matching HEX8
-// interface; the imposed slip along x carries mu p against the slip at every node.
-TEST(FrictionPatch, ThreeDimensionalStickIsExactAndSlipCarriesMuP) {
-  const double p = kE * 0.01, tau = kPatch3dShear, s = 0.002;
-  auto stick = runDeckText("friction_patch_3d_stick", stickPatch3dDeck("contact_patch3d.e"));
-  // Solver tolerance, not discretisation: Newton stops at 1e-8 of the first
-  // residual and GMRES at 1e-10 (measured 2e-11); a wrong contact state (a
-  // node slipping or open) leaves errors of 1e-4 (seen while developing).
-  EXPECT_LT(stickPatch3dError(*stick.simulation), 1e-8 * 0.01);
-  auto slip = runDeck("friction_patch_3d");
-  if (worldComm()->getRank() != 0) return;
-  const double area = (1 + 0.003) * (1 + 0.003);  // tractions per current area
-  const auto stuck = checkTractions(stick.results, [&](double) { return -tau / area; }, 1e-8 * p, 3);
-  EXPECT_EQ(stuck.stick, 25);
-  EXPECT_NEAR(lastGlobal(stick.results, "contact_force_punch_x"), -tau, 1e-8 * p);
-  const auto slipping = checkTractions(slip.results, [](double pressure) { return -kMu * pressure; }, 1e-8 * p, 3);
-  EXPECT_EQ(slipping.slip, 25);
-  const auto& slipX = lastNodal(slip.results, "contact_slip_x");
-  const auto& state = lastNodal(slip.results, "contact_state");
-  for (std::size_t i = 0; i < state.size(); ++i)
-    if (state[i] > 0.5) EXPECT_GT(slipX[i], 0.5 * s) << "node " << i + 1;
-}
-
-// The same 3D stick on matching meshes (3 x 3 punch faces on 3 x 3 base
-// faces): every slave edge lies on a master edge, the clipping's degenerate
-// case. Its second step starts at equilibrium (the response is linear); with
-// a clipping tolerance inside the iterates' scatter (1e-10 of the face) the
-// objective slip's derivative flipped between Newton iterates and the step
-// cycled at 1e-9 of the contact force until it was cut back and failed.
-TEST(FrictionPatch, ThreeDimensionalStickIsExactOnMatchingMeshes) {
-  const double p = kE * 0.01, tau = kPatch3dShear;
-  auto stick = runDeckText("friction_patch_3d_stick_matching", stickPatch3dDeck("contact_patch3d_matching.e"));
-  EXPECT_EQ(stick.summary.cutbacks, 0);
-  for (int iterations : stick.summary.stepNewtonIterations) EXPECT_LE(iterations, 6);
-  EXPECT_LT(stickPatch3dError(*stick.simulation), 1e-8 * 0.01);
-  if (worldComm()->getRank() != 0) return;
-  const double area = (1 + 0.003) * (1 + 0.003);
-  const auto stuck = checkTractions(stick.results, [&](double) { return -tau / area; }, 1e-8 * p, 3);
-  EXPECT_EQ(stuck.stick, 16);
-  EXPECT_NEAR(lastGlobal(stick.results, "contact_force_punch_x"), -tau, 1e-8 * p);
-}
-
-// The imposed slip of xml/friction_patch_3d.xml on the matching mesh: mu p
-// against the slip at every node, as on the non-matching one.
-TEST(FrictionPatch, ThreeDimensionalSlipOnMatchingMeshesCarriesMuP) {
-  ShippedDeck deck("friction_patch_3d", "contact_patch3d.e");
-  deck.replace(shippedMesh("contact_patch3d.e"), shippedMesh("contact_patch3d_matching.e"));
-  auto slip = runDeckText("friction_patch_3d_slip_matching", deck.text);
-  EXPECT_EQ(slip.summary.cutbacks, 0);
-  if (worldComm()->getRank() != 0) return;
-  const auto nodes = checkTractions(slip.results, [](double pressure) { return -kMu * pressure; }, 1e-8 * kE * 0.01, 3);
-  EXPECT_EQ(nodes.stick, 0);
-  EXPECT_GE(nodes.slip, 9);
 }
 
 // Sliding punch (the peer benchmark's friction case, coarse shipped mesh):

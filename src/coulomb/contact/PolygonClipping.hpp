@@ -61,7 +61,7 @@ void makeCounterClockwise(Polygon2<T>& polygon);
 /// scatter crossed the band's outer edge, where the polygon jumps from "the
 /// vertex" to "the intersections": the objective slip, which multiplies dM
 /// by the coordinates, cycled at 1e-9 of the contact force and the 3D stick
-/// patch failed. At 100 × (1e-8 of the face) the scatter stays inside; the
+/// patch failed. At 100 × 1e-10 = 1e-8 of the face the scatter stays inside; the
 /// area a vertex in the band adds is below 1e-8 of the face. Widening the
 /// merge and area tolerances as well broke the finite-difference checks of
 /// the contact tangent on distorted meshes, so only the band is wide.

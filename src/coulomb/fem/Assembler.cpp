@@ -257,6 +257,22 @@ Assembler::Assembler(const mesh::Mesh& mesh, const DofMap& dofs, const ModelSett
   impl_->ownedColumn.resize(overlapMap.getNodeNumElements());
   for (std::size_t i = 0; i < impl_->ownedColumn.size(); ++i)
     impl_->ownedColumn[i] = columnMap.getLocalElement(overlapMap.getGlobalElement(static_cast<LocalOrdinal>(i)));
+  // sumIntoLocalValues would drop a column -1 silently: check the invariant
+  // once (every node of a local element touching an owned node is a column).
+  const int numOwnedNodes = mesh.numOwnedNodes(), dim = dofs.dofsPerNode();
+  for (const auto& block : global.blocks) {
+    const int n = mesh::numNodes(block.cellType);
+    for (long long element : mesh.localElements(static_cast<std::size_t>(&block - global.blocks.data()))) {
+      const long long* cell = &block.connectivity[(element - block.firstElement) * n];
+      bool touchesOwned = false;
+      for (int a = 0; a < n; ++a) touchesOwned |= mesh.localNode(cell[a]) < numOwnedNodes;
+      for (int a = 0; a < n && touchesOwned; ++a)
+        COULOMB_REQUIRE(impl_->ownedColumn[dofs.localDof(mesh.localNode(cell[a]), 0)] >= 0 &&
+                            impl_->ownedColumn[dofs.localDof(mesh.localNode(cell[a]), dim - 1)] >= 0,
+                        "internal: node " << cell[a] + 1 << " of element " << element + 1
+                                          << " is missing from the owned tangent's column map");
+    }
+  }
   impl_->overlapResidual = Teuchos::rcp(new Vector(dofs.overlapMap()));
   impl_->overlapU = Teuchos::rcp(new Vector(dofs.overlapMap()));
   impl_->ownedToOverlap = Teuchos::rcp(new Import(dofs.ownedMap(), dofs.overlapMap()));
