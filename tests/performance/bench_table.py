@@ -8,6 +8,29 @@ when it did not end ok.
 import json
 
 
+def ccx_getter(key):
+    return lambda row: ccx(row, key)
+
+
+def cost_columns(per="step", solve_time=False):
+    """the columns every contact table shows: size, Newton and Krylov work,
+    time and memory (`per`: "step" or "inc" for the Newton maximum)"""
+    cols = [("dofs", "dofs", "{}"), ("Newton", "newton_iterations", "{}"),
+            (f"its/{per} max", f"newton_per_{'increment' if per == 'inc' else per}_max", "{}"),
+            ("lin.it", "linear_iterations", "{}"),
+            ("s/Newton", "time_per_newton_s", "{:.3f}")]
+    if solve_time:
+        cols.append(("solve s", "linear_solve_s_per_solve", "{:.3f}"))
+    return cols + [("contact s", "contact_s", "{:.2f}"),
+                   ("wall s", "wall_s", "{:.2f}"), ("RSS MB", "max_rss_mb", "{:.0f}")]
+
+
+# CalculiX's Newton iterations and time, and the ratio (--calculix runs)
+CALCULIX_COST = [("ccx Newton", ccx_getter("newton_iterations"), "{}"),
+                 ("ccx wall s", ccx_getter("wall_s"), "{:.2f}"),
+                 ("ccx/coulomb time", "time_ratio_calculix_over_coulomb", "{:.2f}")]
+
+
 def read_rows(stream):
     rows = []
     for line in stream:

@@ -68,30 +68,21 @@ fi
 echo
 printf '%s\n' "${lines[@]}" | PYTHONPATH="$here/tests/performance" /usr/bin/python3 -c '
 import sys
-from bench_table import ccx, print_table, read_rows
+from bench_table import CALCULIX_COST, ccx, cost_columns, print_table, read_rows
 rows = read_rows(sys.stdin)
 def slip(r):
     s, a = r.get("slipping_slave_nodes_end"), r.get("active_slave_nodes_end")
     return None if s is None and a is None else f"{s if s is not None else chr(45)}/{a if a is not None else chr(45)}"
 cols = [("ref", "ref", "{}"), ("np", "np", "{}"),
         ("mu", lambda r: "0 (frictionless)" if r.get("frictionless") else r.get("mu"), "{}"),
-        ("status", "status", "{}"),
-        ("dofs", "dofs", "{}"), ("inc", "increments", "{}"),
-        ("Newton", "newton_iterations", "{}"),
-        ("its/inc max", "newton_per_increment_max", "{}"),
-        ("lin.it", "linear_iterations", "{}"),
-        ("s/Newton", "time_per_newton_s", "{:.3f}"),
-        ("contact s", "contact_s", "{:.2f}"),
-        ("wall s", "wall_s", "{:.2f}"), ("RSS MB", "max_rss_mb", "{:.0f}"),
+        ("status", "status", "{}"), ("inc", "increments", "{}")] + cost_columns("inc") + [
         ("P end", "P_end", "{:.1f}"),
         ("Q/P end", "Q_over_P_end", "{:.4f}"),
         ("Q/muP end", "Q_over_muP_end", "{:.4f}"),
         ("gross slip ux", "gross_slip_from_ux", "{:.4g}"),
         ("Q/P sliding", "Q_over_P_sliding_mean", "{:.4f}"),
         ("slip/active", slip, "{}"),
-        ("ccx Newton", lambda r: ccx(r, "newton_iterations"), "{}"),
-        ("ccx wall s", lambda r: ccx(r, "wall_s"), "{:.2f}"),
-        ("ccx/coulomb time", "time_ratio_calculix_over_coulomb", "{:.2f}"),
+        ] + CALCULIX_COST + [
         ("ccx P end", lambda r: ccx(r, "P_end"), "{:.1f}"),
         ("ccx Q/P end", lambda r: ccx(r, "Q_over_P_end"), "{:.4f}"),
         ("ccx gross slip ux", lambda r: ccx(r, "gross_slip_from_ux"), "{:.4g}")]

@@ -67,24 +67,14 @@ fi
 echo
 printf '%s\n' "${lines[@]}" | PYTHONPATH="$here/tests/performance" /usr/bin/python3 -c '
 import sys
-from bench_table import ccx, print_table, read_rows
+from bench_table import CALCULIX_COST, ccx, cost_columns, print_table, read_rows
 rows = read_rows(sys.stdin)
 cols = [("case", "case", "{}"), ("ref", "ref", "{}"),
-        ("np", "np", "{}"), ("status", "status", "{}"),
-        ("dofs", "dofs", "{}"), ("Newton", "newton_iterations", "{}"),
-        ("its/step max", "newton_per_step_max", "{}"),
-        ("lin.it", "linear_iterations", "{}"),
-        ("s/Newton", "time_per_newton_s", "{:.3f}"),
-        ("solve s", "linear_solve_s_per_solve", "{:.3f}"),
-        ("contact s", "contact_s", "{:.2f}"),
-        ("wall s", "wall_s", "{:.2f}"), ("RSS MB", "max_rss_mb", "{:.0f}"),
+        ("np", "np", "{}"), ("status", "status", "{}")] + cost_columns("step", solve_time=True) + [
         ("p_max err", "p_max_rel_err", "{:+.1%}"),
         ("p0 fit err", "p0_fit_rel_err", "{:+.1%}"),
         ("a fit err", "a_fit_rel_err", "{:+.1%}"),
-        ("a bracket err", "a_bracket_rel_err", "{:+.1%}"),
-        ("ccx Newton", lambda r: ccx(r, "newton_iterations"), "{}"),
-        ("ccx wall s", lambda r: ccx(r, "wall_s"), "{:.2f}"),
-        ("ccx/coulomb time", "time_ratio_calculix_over_coulomb", "{:.2f}"),
+        ("a bracket err", "a_bracket_rel_err", "{:+.1%}")] + CALCULIX_COST + [
         ("ccx p0 fit err", lambda r: ccx(r, "p0_fit_rel_err"), "{:+.1%}"),
         ("ccx a fit err", lambda r: ccx(r, "a_fit_rel_err"), "{:+.1%}")]
 print_table(rows, cols, "")

@@ -53,21 +53,14 @@ fi
 echo
 printf '%s\n' "${lines[@]}" | PYTHONPATH="$here/tests/performance" /usr/bin/python3 -c '
 import sys
-from bench_table import ccx, print_table, read_rows
+from bench_table import cost_columns, print_table, read_rows
 rows = read_rows(sys.stdin)
 def stick_slip(r):
     st, sl = r.get("stick_per_increment"), r.get("slip_per_increment")
     return None if not st or not sl else f"{sl[-1]}/{st[-1]}"
 cols = [("ref", "ref", "{}"), ("np", "np", "{}"),
-        ("status", "status", "{}"),
-        ("dofs", "dofs", "{}"), ("inc", "increments", "{}"),
-        ("cutbacks", "cutbacks", "{}"),
-        ("Newton", "newton_iterations", "{}"),
-        ("its/inc max", "newton_per_increment_max", "{}"),
-        ("lin.it", "linear_iterations", "{}"),
-        ("s/Newton", "time_per_newton_s", "{:.3f}"),
-        ("contact s", "contact_s", "{:.2f}"),
-        ("wall s", "wall_s", "{:.2f}"), ("RSS MB", "max_rss_mb", "{:.0f}"),
+        ("status", "status", "{}"), ("inc", "increments", "{}"),
+        ("cutbacks", "cutbacks", "{}")] + cost_columns("inc") + [
         ("P press", "P_after_step1", "{:.1f}"),
         ("P end", "P_end", "{:.1f}"),
         ("Q/P end", "Q_over_P_end", "{:.4f}"),

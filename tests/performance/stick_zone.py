@@ -20,43 +20,46 @@ one), which this table shows side by side (tests/performance/README.md).
 import argparse
 import json
 import math
+import os
 import sys
+
+sys.dont_write_bytecode = True  # no __pycache__ in the (read-only) shared harness folder
+HERE = os.path.dirname(os.path.realpath(__file__))
+sys.path.insert(0, os.path.normpath(os.path.join(HERE, "..", "..", "..", "shared", "bench", "calculix")))
+from bench_calculix import FRICTION_MU  # noqa: E402
+from hertz_post import _names  # noqa: E402
 
 
 def _row(xs):
     return [len(xs), min(xs) if xs else None, max(xs) if xs else None]
 
 
-def coulomb_stick_zones(path):
-    from netCDF4 import Dataset, chartostring
+def _read(path):
+    """x coordinates (by node number - 1) and contact_state per written step"""
+    from netCDF4 import Dataset
     with Dataset(path) as d:
         d.set_auto_mask(False)
-        names = [str(n).strip() for n in chartostring(d.variables["name_nod_var"][:])]
-        state = d.variables["vals_nod_var%d" % (names.index("contact_state") + 1)][:]
-        x = d.variables["coordx"][:]
-        return [_row([float(xi) for xi, s in zip(x, step) if s > 1.5]) for step in state]
+        state = d.variables["vals_nod_var%d" % (_names(d, "name_nod_var").index("contact_state") + 1)][:]
+        return d.variables["coordx"][:], state
 
 
-def calculix_stick_zones(path, mu):
-    """rows per CONTACT result block of a CalculiX .frd (ASCII)"""
-    coords, rows, block, name, data = {}, [], None, None, {}
-    with open(path, errors="replace") as f:
-        for line in f:
-            if line.startswith("    2C"):
-                block = "coords"
-            elif line.startswith("  100CL"):
-                block, name, data = "results", None, {}
-            elif line.startswith(" -4") and block == "results":
-                name = line.split()[1]
-            elif line.startswith(" -3"):
-                if block == "results" and name == "CONTACT":
-                    stick = [coords[n][0] for n, v in data.items()
-                             if v[3] > 0 and math.hypot(v[4], v[5]) < 0.99 * mu * v[3]]
-                    rows.append(_row(stick))
-                block = None
-            elif line.startswith(" -1") and (block == "coords" or (block == "results" and name == "CONTACT")):
-                values = [float(line[13 + 12 * k:25 + 12 * k]) for k in range((len(line.rstrip()) - 13) // 12)]
-                (coords if block == "coords" else data)[int(line[3:13])] = values
+def coulomb_stick_zones(path):
+    x, state = _read(path)
+    return [_row([float(xi) for xi, s in zip(x, step) if s > 1.5]) for step in state]
+
+
+def calculix_stick_zones(frd, result, mu=FRICTION_MU):
+    """rows per CONTACT block of CalculiX's .frd (ccxbench.parse_frd); node
+    numbers are those of the Coulomb result's mesh (the peer benchmark's
+    Exodus and .inp meshes number nodes alike)"""
+    import ccxbench
+    x, _ = _read(result)
+    rows = []
+    for block in ccxbench.parse_frd(frd):
+        k = {name: i for i, name in enumerate(block["comps"])}
+        p, s1, s2 = k["CPRESS"], k["CSHEAR1"], k["CSHEAR2"]
+        rows.append(_row([float(x[n - 1]) for n, v in block["data"].items()
+                          if v[p] > 0 and math.hypot(v[s1], v[s2]) < 0.99 * mu * v[p]]))
     return rows
 
 
@@ -64,11 +67,11 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("result")
     parser.add_argument("--frd")
-    parser.add_argument("--mu", type=float, default=0.3)
+    parser.add_argument("--mu", type=float, default=FRICTION_MU)
     args = parser.parse_args()
     out = {"stick_zone": coulomb_stick_zones(args.result)}
     if args.frd:
-        out["calculix_stick_zone"] = calculix_stick_zones(args.frd, args.mu)
+        out["calculix_stick_zone"] = calculix_stick_zones(args.frd, args.result, args.mu)
     fmt = lambda r: "%4d [%s, %s]" % (r[0], "-" if r[1] is None else "%.3f" % r[1], "-" if r[2] is None else "%.3f" % r[2])
     for k, row in enumerate(out["stick_zone"]):
         other = out.get("calculix_stick_zone", [])

@@ -66,44 +66,47 @@ NodeTerms<dim, S> nodeTerms(const std::array<S, dim>& r, const std::array<S, dim
   return terms;
 }
 
+/// The vector with `component(s)` in the frame's tangent slots (free, not the gap's), zero elsewhere.
+template <int dim, class S, class Component>
+std::array<S, dim> tangential(const NodeTerms<dim, S>& t, Component component) {
+  std::array<S, dim> v{};
+  for (int i = 0; i < t.frame.numFree; ++i)
+    if (t.frame.free[i] != t.frame.gapSlot) v[t.frame.free[i]] = component(t.frame.free[i]);
+  return v;
+}
+
+/// |v|, and v / |v| into `unit` unless |v| is zero (then `unit` is left as it is).
+template <int dim, class S>
+S normalize(const std::array<S, dim>& v, std::array<S, dim>& unit) {
+  using std::sqrt;
+  S norm2 = 0.0;
+  for (int c = 0; c < dim; ++c) norm2 += v[c] * v[c];
+  if (valueOf(norm2) <= 0.0) return S(0.0);
+  const S norm = sqrt(norm2);
+  for (int c = 0; c < dim; ++c) unit[c] = v[c] / norm;
+  return norm;
+}
+
 /// |lambdā_tau| with the slip augmentation `alpha`, and the unit direction (zero when the norm is zero).
 template <int dim, class S>
 S augmentedTangent(const NodeTerms<dim, S>& t, const S& D, double alpha, const FrictionalParameters& p,
                    std::array<S, dim>& direction) {
-  using std::sqrt;
-  std::array<S, dim> bar{};
-  S norm2 = 0.0;
-  for (int i = 0; i < t.frame.numFree; ++i) {
-    const int s = t.frame.free[i];
-    if (s == t.frame.gapSlot) continue;
-    bar[s] = p.k * t.beta[s] + alpha * p.epsTau * t.slip[s] / D;
-    norm2 += bar[s] * bar[s];
-  }
   direction = {};
-  if (valueOf(norm2) <= 0.0) return S(0.0);
-  const S norm = sqrt(norm2);
-  for (int c = 0; c < dim; ++c) direction[c] = bar[c] / norm;
-  return norm;
+  return normalize<dim, S>(
+      tangential(t, [&](int s) { return S(p.k * t.beta[s] + alpha * p.epsTau * t.slip[s] / D); }), direction);
 }
 
 /// The unit direction of the tangential part of `slip` (a fixed vector) in
 /// the frame's tangent slots, written into `direction` unless that part is zero.
 template <int dim, class S>
 void fixedDirection(const NodeTerms<dim, S>& t, const std::array<double, dim>& slip, std::array<S, dim>& direction) {
-  using std::sqrt;
-  std::array<S, dim> q{};
-  S norm2 = 0.0;
-  for (int i = 0; i < t.frame.numFree; ++i) {
-    const int s = t.frame.free[i];
-    if (s == t.frame.gapSlot) continue;
-    for (int c = 0; c < dim; ++c) q[s] += t.frame.b[s][c] * slip[c];
-    norm2 += q[s] * q[s];
-  }
-  if (valueOf(norm2) <= 0.0) return;
-  const S norm = sqrt(norm2);
-  direction = {};
-  for (int i = 0; i < t.frame.numFree; ++i)
-    if (t.frame.free[i] != t.frame.gapSlot) direction[t.frame.free[i]] = q[t.frame.free[i]] / norm;
+  std::array<S, dim> unit{};
+  const auto q = tangential(t, [&](int s) {
+    S v = 0.0;
+    for (int c = 0; c < dim; ++c) v += t.frame.b[s][c] * slip[c];
+    return v;
+  });
+  if (valueOf(normalize<dim, S>(q, unit)) > 0.0) direction = unit;
 }
 
 void checkParameters(double D, const FrictionalParameters& p) {

@@ -260,9 +260,10 @@ Assembler::Assembler(const mesh::Mesh& mesh, const DofMap& dofs, const ModelSett
   // sumIntoLocalValues would drop a column -1 silently: check the invariant
   // once (every node of a local element touching an owned node is a column).
   const int numOwnedNodes = mesh.numOwnedNodes(), dim = dofs.dofsPerNode();
-  for (const auto& block : global.blocks) {
+  for (std::size_t b = 0; b < global.blocks.size(); ++b) {
+    const auto& block = global.blocks[b];
     const int n = mesh::numNodes(block.cellType);
-    for (long long element : mesh.localElements(static_cast<std::size_t>(&block - global.blocks.data()))) {
+    for (long long element : mesh.localElements(b)) {
       const long long* cell = &block.connectivity[(element - block.firstElement) * n];
       bool touchesOwned = false;
       for (int a = 0; a < n; ++a) touchesOwned |= mesh.localNode(cell[a]) < numOwnedNodes;
