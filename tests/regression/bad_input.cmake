@@ -42,6 +42,7 @@ coulomb_bad_input(negative_youngs_modulus "'Materials/steel/Young's Modulus'")
 coulomb_bad_input(poisson_ratio_half "'Materials/steel/Poisson's Ratio'")
 coulomb_bad_input(poisson_ratio_0_7 "'Materials/steel/Poisson's Ratio'")
 coulomb_bad_input(zero_load_steps "'Load Stepping/Number of Steps'")
+coulomb_bad_input(linear_tolerance_contradiction "'Newton/Linear Tolerance'.*Adaptive.*'Nonlinear Solver")
 coulomb_bad_input(missing_mesh_sublist "'Mesh'.*missing")
 coulomb_bad_input(unknown_function "'Neumann Conditions/top pressure/Function'.*'loading'")
 

@@ -17,6 +17,14 @@ ShippedDeck::ShippedDeck(const std::string& name, const std::string& mesh) {
   replace("../exodus_meshes/" + mesh, shippedMesh(mesh));
 }
 
+void ShippedDeck::fixLinearTolerance() {
+  EXPECT_EQ(text.find("name=\"Newton\""), std::string::npos);
+  const auto end = text.rfind("</ParameterList>");
+  ASSERT_NE(end, std::string::npos);
+  text.insert(end, "<ParameterList name=\"Newton\"><Parameter name=\"Linear Tolerance\" type=\"string\" "
+                   "value=\"Fixed\"/></ParameterList>\n");
+}
+
 void ShippedDeck::replace(const std::string& from, const std::string& to) {
   const auto at = text.find(from);
   EXPECT_NE(at, std::string::npos) << from;

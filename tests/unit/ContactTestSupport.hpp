@@ -21,6 +21,11 @@ struct ShippedDeck {
   /// Replaces the first occurrence of `from` (which must be there: a failed
   /// test assertion otherwise).
   void replace(const std::string& from, const std::string& to);
+  /// Adds a "Newton" list with "Linear Tolerance" = Fixed (every linear
+  /// system solved to NOX's 1e-10): for tests of Newton's rate, which
+  /// measure the tangent, not the adaptive Krylov tolerance. The deck must not
+  /// have a "Newton" list already.
+  void fixLinearTolerance();
 };
 
 struct ContactRun {

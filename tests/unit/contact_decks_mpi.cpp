@@ -142,7 +142,9 @@ TEST(ContactPatch, ThreeDimensionalNonMatchingTransmitsUniformPressure) {
 }
 
 TEST(ContactHertz, TwoDimensionalAgreesWithTheory) {
-  auto run = runDeck("hertz2d");
+  ShippedDeck deck("hertz2d", "hertz2d.e");
+  deck.fixLinearTolerance();
+  auto run = runDeckText("hertz2d_fixed_linear_tolerance", deck.text);
   EXPECT_GE(expectSuperlinearOnceSetIsFixed(run.summary, 1.5), 3);
   if (worldComm()->getRank() != 0) return;
   const double load = -lastGlobal(run.results, "reaction_top_y");
@@ -160,7 +162,9 @@ TEST(ContactHertz, TwoDimensionalAgreesWithTheory) {
 }
 
 TEST(ContactHertz, QuarterModelWithTwoPrescribedDofsAtTheOriginConverges) {
-  auto run = runDeck("hertz3d_quarter");
+  ShippedDeck deck("hertz3d_quarter", "hertz3d_quarter.e");
+  deck.fixLinearTolerance();
+  auto run = runDeckText("hertz3d_quarter_fixed_linear_tolerance", deck.text);
   EXPECT_EQ(run.summary.cutbacks, 0);
   EXPECT_EQ(run.summary.steps, 5);
   for (int iterations : run.summary.stepNewtonIterations) EXPECT_LE(iterations, 6);
@@ -183,6 +187,30 @@ TEST(ContactHertz, QuarterModelWithTwoPrescribedDofsAtTheOriginConverges) {
   const auto h = compareWithHertz(run, 3, 4 * quarterLoad);
   EXPECT_LT(std::abs(h.aFit / h.aTheory - 1), 0.05) << "a fit " << h.aFit << " Hertz " << h.aTheory;
   EXPECT_LT(std::abs(h.p0Fit / h.p0Theory - 1), 0.10) << "p0 fit " << h.p0Fit << " Hertz " << h.p0Theory;
+}
+
+// The default adaptive Krylov tolerance (solver/LinearTolerance.hpp) solves
+// each Newton system only as accurately as the iterate can use: the same
+// answer as exact solves to the Newton tolerance, the same active set, at
+// most one more Newton iteration per step, and fewer Krylov iterations.
+TEST(ContactHertz, AdaptiveLinearToleranceGivesTheExactSolvesAnswer) {
+  ShippedDeck fixed("hertz3d_quarter", "hertz3d_quarter.e");
+  fixed.fixLinearTolerance();
+  auto exact = runDeckText("hertz3d_quarter_exact_solves", fixed.text);
+  auto adaptive = runDeck("hertz3d_quarter");
+  ASSERT_EQ(adaptive.summary.steps, exact.summary.steps);
+  EXPECT_EQ(adaptive.summary.cutbacks, 0);
+  for (int s = 0; s < exact.summary.steps; ++s)
+    EXPECT_LE(adaptive.summary.stepNewtonIterations[s], exact.summary.stepNewtonIterations[s] + 1) << "step " << s + 1;
+  EXPECT_EQ(adaptive.summary.pairMaximumActive, exact.summary.pairMaximumActive);
+  EXPECT_LT(adaptive.summary.linearIterations, 0.7 * exact.summary.linearIterations);
+  if (worldComm()->getRank() != 0) return;
+  std::printf("hertz3d_quarter: %d / %d Krylov iterations (adaptive / exact solves)\n",
+              adaptive.summary.linearIterations, exact.summary.linearIterations);
+  const double load = lastGlobal(exact.results, "reaction_top_z");
+  EXPECT_NEAR(lastGlobal(adaptive.results, "reaction_top_z"), load, 1e-6 * std::abs(load));
+  EXPECT_NEAR(lastGlobal(adaptive.results, "contact_force_sphere_z"), lastGlobal(exact.results, "contact_force_sphere_z"),
+              1e-6 * std::abs(load));
 }
 
 

@@ -229,6 +229,12 @@ TEST(FrictionPatch, SlipDirectionFromTheSlip) {
   ShippedDeck patch("friction_patch_2d", "contact_patch2d.e"), punch("friction_punch", "friction_punch.e");
   patch.replace(kCoulombLaw, never);
   punch.replace(kCoulombLaw, never);
+  // This variant sits near the 4-per-increment bound: 93 Newton iterations
+  // with exact linear solves at np = 1, 2, 3; with the adaptive Krylov
+  // tolerance its stick/slip path varies from 90 to 97 with the rank count.
+  // The bound is checked on exact solves here and on the adaptive default by
+  // FrictionPunch and the penalty and MPC punches.
+  punch.fixLinearTolerance();
   auto slip = runDeckText("friction_slip_direction_patch", patch.text);
   auto sliding = runDeckText("friction_slip_direction_punch", punch.text);
   expectGrossSlipAtMu(sliding, "Slip Reset Frequency -1");

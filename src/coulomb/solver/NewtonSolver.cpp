@@ -1,7 +1,9 @@
 #include "coulomb/solver/NewtonSolver.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <iomanip>
+#include <memory>
 
 #include <NOX_Observer.hpp>
 #include <NOX_Solver_Factory.H>
@@ -22,14 +24,38 @@ namespace coulomb::solver {
 namespace {
 
 /// NOX::Thyra::Group that tells how many Krylov iterations its last solve took.
+/// With an adaptive linear tolerance it also chooses the Krylov tolerance of
+/// each Newton solve (LinearTolerance.hpp).
 class CountingGroup : public NOX::Thyra::Group {
 public:
+  /// Shared by the clones NOX makes of the group: the residual norm before the previous step.
+  struct Forcing {
+    LinearToleranceSettings settings;
+    double target = 0;             ///< residual norm at which Newton stops
+    double previousNormF = -1.0;   ///< <= 0: no Newton step taken yet
+  };
   using NOX::Thyra::Group::Group;
-  CountingGroup(const CountingGroup& source, NOX::CopyType type) : NOX::Thyra::Group(source, type) {}
+  CountingGroup(const CountingGroup& source, NOX::CopyType type)
+      : NOX::Thyra::Group(source, type), forcing_(source.forcing_) {}
   Teuchos::RCP<NOX::Abstract::Group> clone(NOX::CopyType type) const override {
     return Teuchos::rcp(new CountingGroup(*this, type));
   }
   int lastLinearIterations() const { return last_linear_solve_num_iters_; }
+  void setForcing(std::shared_ptr<Forcing> forcing) { forcing_ = std::move(forcing); }
+
+  /// NOX passes the Newton direction's "Linear Solver" list; its "Tolerance"
+  /// becomes the relative residual tolerance of the Belos solve.
+  NOX::Abstract::Group::ReturnType computeNewton(Teuchos::ParameterList& p) override {
+    if (forcing_) {
+      const double normF = getNormF();
+      p.set("Tolerance", linearTolerance(forcing_->settings, normF, forcing_->previousNormF, forcing_->target));
+      forcing_->previousNormF = normF;
+    }
+    return NOX::Thyra::Group::computeNewton(p);
+  }
+
+private:
+  std::shared_ptr<Forcing> forcing_;
 };
 
 /// Contact part of the convergence test: the active set did not change at
@@ -168,6 +194,12 @@ NewtonReport NewtonSolver::solve(Vector& u) {
   NOX::Thyra::Vector initialGuess(thyraU);
   auto group = Teuchos::rcp(new CountingGroup(initialGuess, model_));
   group->computeF();
+  if (settings_.linearTolerance.adaptive) {
+    auto forcing = std::make_shared<CountingGroup::Forcing>();
+    forcing->settings = settings_.linearTolerance;
+    forcing->target = std::max(settings_.absoluteTolerance, settings_.relativeTolerance * group->getNormF());
+    group->setForcing(forcing);
+  }
 
   using namespace NOX::StatusTest;
   auto residualSmall = Teuchos::rcp(new Combo(Combo::OR));

@@ -9,6 +9,7 @@
 #include <Teuchos_RCP.hpp>
 
 #include "coulomb/core/TpetraTypes.hpp"
+#include "coulomb/solver/LinearTolerance.hpp"
 #include "coulomb/solver/ModelEvaluator.hpp"
 
 namespace coulomb::contact {
@@ -22,6 +23,7 @@ struct NewtonSettings {
   int maximumIterations = 25;
   double relativeTolerance = 1e-8;  ///< on ||f|| / ||f_0|| (f_0: residual at the step's start)
   double absoluteTolerance = 1e-10; ///< on ||f||
+  LinearToleranceSettings linearTolerance;  ///< Krylov tolerance per iteration (LinearTolerance.hpp)
 };
 
 /// @brief One row of the iteration table.
