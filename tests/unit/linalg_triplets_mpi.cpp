@@ -210,4 +210,83 @@ TEST(TripletAssembly, MatrixSumReusesTheMatrixWhenThePatternRepeats) {
   expectSum(eighth, sameColumns);
 }
 
+// MatrixSum with K = its last result, refilled by the caller (the model
+// evaluator assembles the next K into the last J): the same pattern is
+// completed in the same matrix; a grown one (new entries, new columns at np >
+// 1) is merged in place from the last row backwards; more entries than the
+// buffers hold go to new buffers. Every result equals K' + S on a vector.
+TEST(TripletAssembly, MatrixSumCompletesTheLastResultInPlace) {
+  auto comm = worldComm();
+  // 100 rows per rank: the buffers' 2 % room holds a few new entries per rank.
+  const GlobalOrdinal n = 100 * comm->getSize() + 3;
+  auto map = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(n), 0, comm));
+  std::vector<linalg::MatrixTriplet> k;
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
+    const GlobalOrdinal g = map->getGlobalElement(static_cast<LocalOrdinal>(i));
+    k.push_back({g, g, 3.0});
+    if (g > 0) k.push_back({g, g - 1, -1.0});
+  }
+  auto K = linalg::matrixFromTriplets(k, map);
+  Vector x(map);
+  auto data = x.getDataNonConst(0);
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i)
+    data[i] = std::sin(0.7 + static_cast<double>(map->getGlobalElement(static_cast<LocalOrdinal>(i))));
+  // J := factor K, every other entry of J zero (what the assembler does).
+  auto refill = [&](CrsMatrix& J, double factor) {
+    J.resumeFill();
+    J.setAllToScalar(0.0);
+    for (const auto& t : k) {
+      const double value = factor * t.value;
+      J.sumIntoGlobalValues(t.row, Teuchos::ArrayView<const GlobalOrdinal>(&t.column, 1),
+                            Teuchos::ArrayView<const double>(&value, 1));
+    }
+    J.fillComplete(K->getDomainMap(), K->getRangeMap());
+  };
+  auto expectSum = [&](const Teuchos::RCP<CrsMatrix>& sum, double factor, const std::vector<linalg::MatrixTriplet>& s) {
+    Vector expected(map), part(map), actual(map);
+    K->apply(x, expected);
+    expected.scale(factor);
+    linalg::matrixFromTriplets(s, map)->apply(x, part);
+    expected.update(1.0, part, 1.0);
+    sum->apply(x, actual);
+    actual.update(-1.0, expected, 1.0);
+    EXPECT_LT(actual.normInf(), 1e-14 * 3.0 * static_cast<double>(n));  // round-off: entries up to 3 n, |x| <= 1
+  };
+  auto lastRankTriplets = [&](double scale, GlobalOrdinal shift) {
+    std::vector<linalg::MatrixTriplet> s;
+    if (comm->getRank() == comm->getSize() - 1)
+      for (GlobalOrdinal g = 0; g < n; ++g) s.push_back({g, (g + shift) % n, scale * static_cast<double>(g + 1)});
+    return s;
+  };
+  linalg::MatrixSum sum;
+  const auto s1 = lastRankTriplets(1.0, n / 2), s2 = lastRankTriplets(-3.0, n / 2);
+  // A few new entries (first rows of every rank, column g + 1): they fit in the buffers' room.
+  std::vector<linalg::MatrixTriplet> s3;
+  for (int rank = 0; rank < comm->getSize(); ++rank)
+    for (GlobalOrdinal g = 100 * rank; g < 100 * rank + 2; ++g) s3.push_back({g, g + 1, 0.5 * static_cast<double>(g + 1)});
+  if (comm->getRank() != 0) s3.clear();
+  auto J = sum.add(*K, s1);
+  expectSum(J, 1.0, s1);
+  refill(*J, 2.0);
+  auto same = sum.add(*J, s2);  // the same pattern: completed in the same matrix
+  EXPECT_EQ(same.get(), J.get());
+  expectSum(same, 2.0, s2);
+  refill(*same, -1.0);
+  auto grown = sum.add(*same, s3);  // s1's entries stay (zero), s3's are merged in
+  EXPECT_EQ(sum.last().get(), grown.get());
+  EXPECT_EQ(sum.inPlaceMerges(), 1);
+  expectSum(grown, -1.0, s3);
+  EXPECT_GE(grown->getGlobalNumEntries(), same->getGlobalNumEntries());
+  refill(*grown, 4.0);
+  std::vector<linalg::MatrixTriplet> dense;  // more than the buffers hold
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
+    const GlobalOrdinal g = map->getGlobalElement(static_cast<LocalOrdinal>(i));
+    for (GlobalOrdinal c = 0; c < n; c += 2) dense.push_back({g, c, 0.1 * static_cast<double>(g + c)});
+  }
+  auto fresh = sum.add(*grown, dense);
+  expectSum(fresh, 4.0, dense);
+  refill(*fresh, 1.0);
+  expectSum(sum.add(*fresh, {}), 1.0, {});  // no triplets: the refilled K itself
+}
+
 }  // namespace coulomb::test

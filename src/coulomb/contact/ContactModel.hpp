@@ -70,6 +70,11 @@ public:
   /// J = T (K + K_c) + G as a matrix that the next call may overwrite in place
   /// (same pattern: the values are replaced); K unchanged; K itself when no pair contributes.
   Teuchos::RCP<CrsMatrix> condensedTangent(const Teuchos::RCP<CrsMatrix>& bulkTangent) const;
+  /// The last condensed tangent (null before the first): the model
+  /// evaluator assembles the next K straight into it when the assembler
+  /// accepts it, and condensedTangent() then adds the interface rows in
+  /// place — K never has a matrix of its own (hertz3d_r2: 39 MB less at the peak).
+  Teuchos::RCP<CrsMatrix> tangentStorage() const { return tangentSum_.last(); }
 
   /// `Contact/System Form` = Saddle Point: the multipliers are Newton
   /// unknowns (MultiplierBlock in ContactPair.hpp) instead of being condensed.

@@ -1,5 +1,6 @@
 #include "coulomb/fem/Assembler.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include <Teuchos_TimeMonitor.hpp>
@@ -288,6 +289,30 @@ Teuchos::RCP<CrsMatrix> Assembler::createMatrix() const {
   return matrix;
 }
 
+bool Assembler::acceptsTangent(const CrsMatrix& matrix) const {
+  const auto& graph = *impl_->ownedGraph;
+  if (matrix.getRowMap().get() != graph.getRowMap().get() || !matrix.isFillComplete()) return false;
+  const auto& own = *graph.getColMap();
+  const auto& other = *matrix.getColMap();
+  if (&own != &other) {
+    if (other.getNodeNumElements() < own.getNodeNumElements()) return false;
+    const auto a = own.getNodeElementList(), b = other.getNodeElementList();
+    if (!std::equal(a.begin(), a.end(), b.begin())) return false;
+  }
+  // Every entry of the owned graph in the matrix's rows (both sorted by local column).
+  const auto k = graph.getLocalGraphHost();
+  const auto j = matrix.getLocalMatrixHost().graph;
+  for (std::size_t r = 0; r + 1 < k.row_map.extent(0); ++r) {
+    auto at = j.row_map(r);
+    const auto end = j.row_map(r + 1);
+    for (auto e = k.row_map(r); e < k.row_map(r + 1); ++e) {
+      while (at < end && j.entries(at) < k.entries(e)) ++at;
+      if (at == end || j.entries(at) != k.entries(e)) return false;
+    }
+  }
+  return true;
+}
+
 AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residual, CrsMatrix* jacobian,
                                    Vector* reactions) {
   Impl& m = *impl_;
@@ -297,8 +322,8 @@ AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residua
   m.overlapResidual->putScalar(0.0);
   TangentTarget K;
   if (jacobian) {
-    COULOMB_REQUIRE(jacobian->getColMap().get() == m.ownedGraph->getColMap().get(),
-                    "internal: the tangent must be made by Assembler::createMatrix");
+    COULOMB_REQUIRE(jacobian->getColMap().get() == m.ownedGraph->getColMap().get() || acceptsTangent(*jacobian),
+                    "internal: the tangent must be made by Assembler::createMatrix or accepted by acceptsTangent");
     jacobian->resumeFill();
     jacobian->setAllToScalar(0.0);
     m.ghostMatrix->resumeFill();

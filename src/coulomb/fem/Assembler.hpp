@@ -35,6 +35,11 @@ public:
 
   /// A matrix on the owned graph, to be filled by assemble().
   Teuchos::RCP<CrsMatrix> createMatrix() const;
+  /// True when assemble() can fill `matrix` in place: it has the owned rows,
+  /// every entry of the owned graph, and a column map that starts with the
+  /// owned graph's (a condensed contact tangent built on K by
+  /// linalg::MatrixSum). Its other entries are zeroed by assemble(). Local.
+  bool acceptsTangent(const CrsMatrix& matrix) const;
   const DirichletConstraints& constraints() const { return *constraints_; }
 
   /// residual = f_int(u) − f_ext(t) with prescribed rows u − ū(t); jacobian

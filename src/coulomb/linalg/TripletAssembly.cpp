@@ -202,12 +202,14 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
       }
     }
   }
+  const bool inPlace = last_.get() == &K;
   if (!anyRank(*rowMap->getComm(), !samePattern)) {
     const auto local = last_->getLocalMatrixDevice();
     for (std::size_t r = 0; r < numRows; ++r) {
       const auto first = local.graph.row_map(r);
       if (start[r] == start[r + 1]) {
-        std::copy(kValues.data() + kRows(r), kValues.data() + kRows(r + 1), local.values.data() + first);
+        if (!inPlace)
+          std::copy(kValues.data() + kRows(r), kValues.data() + kRows(r + 1), local.values.data() + first);
       } else {
         mergeRow(r);
         for (std::size_t k = 0; k < merged.size(); ++k) local.values(first + k) = merged[k].second;
@@ -224,48 +226,79 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
   // DoFs), and no second copy of K's size is alive at any time.
   const bool newColumns = columnGids_.size() > kColumnCount;
   const bool anyNewColumns = anyRank(*rowMap->getComm(), newColumns);
-  using LocalMatrix = CrsMatrix::local_matrix_device_type;
-  if (rowBuffer_.extent(0) != numRows + 1)
-    rowBuffer_ = decltype(rowBuffer_)(Kokkos::ViewAllocateWithoutInitializing("rows"), numRows + 1);
-  rowBuffer_(0) = 0;
+  // Row pointers of K + S, apart: K's may be rowBuffer_ itself (inPlace).
+  std::vector<std::size_t> rows(numRows + 1, 0);
   for (std::size_t r = 0; r < numRows; ++r) {
     std::size_t count = kRows(r + 1) - kRows(r);
     if (start[r] != start[r + 1]) {
       mergeRow(r);
       count = merged.size();
     }
-    rowBuffer_(r + 1) = rowBuffer_(r) + count;
+    rows[r + 1] = rows[r] + count;
   }
-  const std::size_t nnz = rowBuffer_(numRows);
-  last_ = Teuchos::null;
-  if (indexBuffer_.extent(0) < nnz) {
-    // A little room for the patterns of the next iterations (contact grows).
-    const std::size_t capacity = nnz + nnz / 50;
-    indexBuffer_ = decltype(indexBuffer_)();
-    valueBuffer_ = decltype(valueBuffer_)();
-    indexBuffer_ = decltype(indexBuffer_)(Kokkos::ViewAllocateWithoutInitializing("columns"), capacity);
-    valueBuffer_ = decltype(valueBuffer_)(Kokkos::ViewAllocateWithoutInitializing("values"), capacity);
+  const std::size_t nnz = rows[numRows];
+  if (inPlace && indexBuffer_.extent(0) >= nnz) {
+    // K is the last result, refilled: its rows only grow (all of K's entries
+    // stay), so row r moves to an offset >= its old one. From the last row
+    // backwards, each row is read (mergeRow copies it) before anything is
+    // written over it; no second matrix of K's size is made.
+    for (std::size_t r = numRows; r-- > 0;) {
+      std::size_t at = rows[r];
+      if (start[r] == start[r + 1]) {
+        const auto from = kRows(r), count = kRows(r + 1) - kRows(r);
+        std::copy_backward(kEntries.data() + from, kEntries.data() + from + count, indexBuffer_.data() + at + count);
+        std::copy_backward(kValues.data() + from, kValues.data() + from + count, valueBuffer_.data() + at + count);
+      } else {
+        mergeRow(r);
+        for (const auto& [column, value] : merged) {
+          indexBuffer_(at) = column;
+          valueBuffer_(at) = value;
+          ++at;
+        }
+      }
+    }
+    std::copy(rows.begin(), rows.end(), rowBuffer_.data());
+    ++inPlaceMerges_;
+  } else {
+    if (inPlace) {
+      // No room left in K's buffers: new ones (K keeps the old alive until its caller drops it).
+      rowBuffer_ = decltype(rowBuffer_)();
+      indexBuffer_ = decltype(indexBuffer_)();
+      valueBuffer_ = decltype(valueBuffer_)();
+    }
+    last_ = Teuchos::null;
+    if (rowBuffer_.extent(0) != numRows + 1)
+      rowBuffer_ = decltype(rowBuffer_)(Kokkos::ViewAllocateWithoutInitializing("rows"), numRows + 1);
+    std::copy(rows.begin(), rows.end(), rowBuffer_.data());
+    if (indexBuffer_.extent(0) < nnz) {
+      // A little room for the patterns of the next iterations (contact grows).
+      const std::size_t capacity = nnz + nnz / 50;
+      indexBuffer_ = decltype(indexBuffer_)();
+      valueBuffer_ = decltype(valueBuffer_)();
+      indexBuffer_ = decltype(indexBuffer_)(Kokkos::ViewAllocateWithoutInitializing("columns"), capacity);
+      valueBuffer_ = decltype(valueBuffer_)(Kokkos::ViewAllocateWithoutInitializing("values"), capacity);
+    }
+    for (std::size_t r = 0; r < numRows; ++r) {
+      std::size_t at = rows[r];
+      if (start[r] == start[r + 1]) {
+        for (auto k = kRows(r); k < kRows(r + 1); ++k, ++at) {
+          indexBuffer_(at) = kEntries(k);
+          valueBuffer_(at) = kValues(k);
+        }
+      } else {
+        mergeRow(r);
+        for (const auto& [column, value] : merged) {
+          indexBuffer_(at) = column;
+          valueBuffer_(at) = value;
+          ++at;
+        }
+      }
+    }
   }
   const auto range = std::make_pair(std::size_t(0), nnz);
   const auto indexView = Kokkos::subview(indexBuffer_, range);
   const auto valueView = Kokkos::subview(valueBuffer_, range);
   const auto& pointerView = rowBuffer_;
-  for (std::size_t r = 0; r < numRows; ++r) {
-    std::size_t at = pointerView(r);
-    if (start[r] == start[r + 1]) {
-      for (auto k = kRows(r); k < kRows(r + 1); ++k, ++at) {
-        indexView(at) = kEntries(k);
-        valueView(at) = kValues(k);
-      }
-    } else {
-      mergeRow(r);
-      for (const auto& [column, value] : merged) {
-        indexView(at) = column;
-        valueView(at) = value;
-        ++at;
-      }
-    }
-  }
   // The column map and importer: K's when no rank has new columns (always
   // in serial); the last result's when every rank has the same columns as
   // then (a new pattern in the same columns: the set changed, the
@@ -285,11 +318,13 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
       importer = Teuchos::rcp(new Import(K.getDomainMap(), columnMap));
     }
   }
-  const LocalMatrix local("K + S", static_cast<LocalOrdinal>(numRows),
-                          static_cast<LocalOrdinal>(columnMap->getNodeNumElements()),
-                          static_cast<typename LocalMatrix::size_type>(nnz), valueView, pointerView, indexView);
-  last_ = Teuchos::rcp(new CrsMatrix(local, rowMap, columnMap, K.getDomainMap(), K.getRangeMap(), importer,
-                                     Teuchos::null));
+  // A static graph, as the assembler's K: its ghost-row export (ADD) then sums
+  // into existing entries when the next K is assembled into this matrix.
+  const typename CrsGraph::local_graph_device_type localGraph(indexView, pointerView);
+  const auto graph = Teuchos::rcp(new CrsGraph(localGraph, rowMap, columnMap, K.getDomainMap(), K.getRangeMap(),
+                                               importer, Teuchos::null));
+  last_ = Teuchos::rcp(new CrsMatrix(graph, valueView));
+  if (!last_->isFillComplete()) last_->fillComplete(K.getDomainMap(), K.getRangeMap());
   lastColumnGids_ = columnGids_;
   lastColumnMap_ = columnMap;
   lastImporter_ = importer;

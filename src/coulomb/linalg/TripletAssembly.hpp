@@ -57,8 +57,16 @@ class MatrixSum {
 public:
   /// Collective, as addTriplets.
   Teuchos::RCP<CrsMatrix> add(const CrsMatrix& K, const std::vector<MatrixTriplet>& triplets);
+  /// The last result (null before the first call). K may be this matrix
+  /// itself, refilled by the caller (fem::Assembler::acceptsTangent): the sum
+  /// is then formed in place, and a new pattern (K's and the triplets'
+  /// entries) is merged into the same buffers row by row from the end when
+  /// their capacity allows, so that no second matrix of K's size is made.
+  Teuchos::RCP<CrsMatrix> last() const { return last_; }
   /// Calls that reused the previous matrix (for tests and diagnostics).
   int reuses() const { return reuses_; }
+  /// Calls that merged a grown pattern into K's own buffers (K = last()).
+  int inPlaceMerges() const { return inPlaceMerges_; }
 
 private:
   using LocalMatrix = CrsMatrix::local_matrix_device_type;
@@ -72,6 +80,7 @@ private:
   Teuchos::RCP<const Import> lastImporter_;  ///< ... and importer, reused for the same columns
   const Map* lastDomainMap_ = nullptr;       ///< K's domain map then (the importer's source)
   int reuses_ = 0;
+  int inPlaceMerges_ = 0;
 };
 
 /// @brief Collective: adds every rank's `entries` into `owned` (on its map).

@@ -133,12 +133,18 @@ void ModelEvaluator::evalContact(const Vector& x, Vector* f, const Teuchos::RCP<
   }
   if (W != Teuchos::null && !lastInverted_) {
     beforeJacobian_();
-    if (bulkTangent_.is_null()) bulkTangent_ = assembler_.createMatrix();
+    // Condensed form: K is assembled into the last condensed tangent (its
+    // pattern holds K's), which condensedTangent() completes in place.
+    auto storage = saddlePoint_ ? Teuchos::null : contact_->tangentStorage();
+    const bool inPlace = !storage.is_null() && !anyRank(*map_->getComm(), !assembler_.acceptsTangent(*storage));
+    if (inPlace) bulkTangent_ = storage;
+    else if (bulkTangent_.is_null()) bulkTangent_ = assembler_.createMatrix();
+    storage = Teuchos::null;
     assembler_.assemble(time_, u, nullptr, bulkTangent_.get());
     auto tangent = saddlePoint_ ? contact_->saddlePointTangent(*bulkTangent_) : contact_->condensedTangent(bulkTangent_);
     // The bulk tangent is consumed: hold no second K-sized matrix through the
     // linear solve (the next Jacobian allocates it again, ~1 % of its time).
-    if (tangent.get() != bulkTangent_.get()) bulkTangent_ = Teuchos::null;
+    if (inPlace || tangent.get() != bulkTangent_.get()) bulkTangent_ = Teuchos::null;
     using ThyraOp = Thyra::TpetraLinearOp<Scalar, LocalOrdinal, GlobalOrdinal, typename CrsMatrix::node_type>;
     auto* op = dynamic_cast<ThyraOp*>(W.get());
     COULOMB_REQUIRE(op != nullptr, "internal: the Jacobian operator is not a Thyra::TpetraLinearOp");
