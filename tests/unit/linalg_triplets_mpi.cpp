@@ -124,6 +124,39 @@ TEST(TripletAssembly, AddTripletsEqualsTheSumAppliedToAVector) {
   }
 }
 
+namespace {
+
+/// The owned rows of a lower bidiagonal K: 3 on the diagonal, -1 left of it.
+std::vector<linalg::MatrixTriplet> bidiagonal(const Map& map) {
+  std::vector<linalg::MatrixTriplet> k;
+  for (std::size_t i = 0; i < map.getNodeNumElements(); ++i) {
+    const GlobalOrdinal g = map.getGlobalElement(static_cast<LocalOrdinal>(i));
+    k.push_back({g, g, 3.0});
+    if (g > 0) k.push_back({g, g - 1, -1.0});
+  }
+  return k;
+}
+
+/// x(g) = cos(phase + g) on the owned rows.
+Vector cosineVector(const Teuchos::RCP<const Map>& map, double phase) {
+  Vector x(map);
+  auto data = x.getDataNonConst(0);
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i)
+    data[i] = std::cos(phase + static_cast<double>(map->getGlobalElement(static_cast<LocalOrdinal>(i))));
+  return x;
+}
+
+/// From the last rank only: (g, (g + shift) mod n, scale (g + 1)) for every row g.
+std::vector<linalg::MatrixTriplet> shiftedFromLastRank(const Map& map, double scale, GlobalOrdinal shift) {
+  std::vector<linalg::MatrixTriplet> s;
+  const auto n = static_cast<GlobalOrdinal>(map.getGlobalNumElements());
+  if (map.getComm()->getRank() == map.getComm()->getSize() - 1)
+    for (GlobalOrdinal g = 0; g < n; ++g) s.push_back({g, (g + shift) % n, scale * static_cast<double>(g + 1)});
+  return s;
+}
+
+}  // namespace
+
 // MatrixSum: a second sum with the same pattern reuses the first result's
 // matrix with the new values; a different pattern builds a new one. Both
 // equal K + S applied to a vector.
@@ -131,23 +164,9 @@ TEST(TripletAssembly, MatrixSumReusesTheMatrixWhenThePatternRepeats) {
   auto comm = worldComm();
   const GlobalOrdinal n = 4 * comm->getSize() + 3;
   auto map = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(n), 0, comm));
-  std::vector<linalg::MatrixTriplet> k;
-  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
-    const GlobalOrdinal g = map->getGlobalElement(static_cast<LocalOrdinal>(i));
-    k.push_back({g, g, 3.0});
-    if (g > 0) k.push_back({g, g - 1, -1.0});
-  }
-  auto K = linalg::matrixFromTriplets(k, map);
-  auto triplets = [&](double scale, GlobalOrdinal shift) {
-    std::vector<linalg::MatrixTriplet> s;
-    if (comm->getRank() == comm->getSize() - 1)
-      for (GlobalOrdinal g = 0; g < n; ++g) s.push_back({g, (g + shift) % n, scale * static_cast<double>(g + 1)});
-    return s;
-  };
-  Vector x(map);
-  auto data = x.getDataNonConst(0);
-  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i)
-    data[i] = std::cos(0.3 + static_cast<double>(map->getGlobalElement(static_cast<LocalOrdinal>(i))));
+  auto K = linalg::matrixFromTriplets(bidiagonal(*map), map);
+  auto triplets = [&](double scale, GlobalOrdinal shift) { return shiftedFromLastRank(*map, scale, shift); };
+  const Vector x = cosineVector(map, 0.3);
   auto expectSum = [&](const Teuchos::RCP<CrsMatrix>& sum, const std::vector<linalg::MatrixTriplet>& s) {
     Vector expected(map), part(map), actual(map);
     K->apply(x, expected);
@@ -220,17 +239,9 @@ TEST(TripletAssembly, MatrixSumCompletesTheLastResultInPlace) {
   // 100 rows per rank: the buffers' 2 % room holds a few new entries per rank.
   const GlobalOrdinal n = 100 * comm->getSize() + 3;
   auto map = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(n), 0, comm));
-  std::vector<linalg::MatrixTriplet> k;
-  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
-    const GlobalOrdinal g = map->getGlobalElement(static_cast<LocalOrdinal>(i));
-    k.push_back({g, g, 3.0});
-    if (g > 0) k.push_back({g, g - 1, -1.0});
-  }
+  const auto k = bidiagonal(*map);
   auto K = linalg::matrixFromTriplets(k, map);
-  Vector x(map);
-  auto data = x.getDataNonConst(0);
-  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i)
-    data[i] = std::sin(0.7 + static_cast<double>(map->getGlobalElement(static_cast<LocalOrdinal>(i))));
+  const Vector x = cosineVector(map, 0.7);
   // J := factor K, every other entry of J zero (what the assembler does).
   auto refill = [&](CrsMatrix& J, double factor) {
     J.resumeFill();
@@ -252,14 +263,8 @@ TEST(TripletAssembly, MatrixSumCompletesTheLastResultInPlace) {
     actual.update(-1.0, expected, 1.0);
     EXPECT_LT(actual.normInf(), 1e-14 * 3.0 * static_cast<double>(n));  // round-off: entries up to 3 n, |x| <= 1
   };
-  auto lastRankTriplets = [&](double scale, GlobalOrdinal shift) {
-    std::vector<linalg::MatrixTriplet> s;
-    if (comm->getRank() == comm->getSize() - 1)
-      for (GlobalOrdinal g = 0; g < n; ++g) s.push_back({g, (g + shift) % n, scale * static_cast<double>(g + 1)});
-    return s;
-  };
   linalg::MatrixSum sum;
-  const auto s1 = lastRankTriplets(1.0, n / 2), s2 = lastRankTriplets(-3.0, n / 2);
+  const auto s1 = shiftedFromLastRank(*map, 1.0, n / 2), s2 = shiftedFromLastRank(*map, -3.0, n / 2);
   // A few new entries (first rows of every rank, column g + 1): they fit in the buffers' room.
   std::vector<linalg::MatrixTriplet> s3;
   for (int rank = 0; rank < comm->getSize(); ++rank)

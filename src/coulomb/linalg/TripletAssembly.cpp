@@ -185,6 +185,9 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
   // The pattern of the last result again (same columns, every row as
   // before): only the values are written, straight into that matrix — one
   // pass over K, no buffer of its size. Every rank must agree (collective).
+  // K = the last result (refilled): its rows without triplets are the
+  // result's own, so only the interface rows are checked.
+  const bool inPlace = last_.get() == &K;
   bool samePattern = !last_.is_null() && columnGids_ == lastColumnGids_;
   if (samePattern) {
     const auto graph = last_->getLocalMatrixDevice().graph;
@@ -192,6 +195,7 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
     for (std::size_t r = 0; samePattern && r < numRows; ++r) {
       const auto first = graph.row_map(r), count = graph.row_map(r + 1) - first;
       if (start[r] == start[r + 1]) {
+        if (inPlace) continue;
         samePattern = count == kRows(r + 1) - kRows(r) &&
                       std::equal(kEntries.data() + kRows(r), kEntries.data() + kRows(r + 1), graph.entries.data() + first);
       } else {
@@ -202,7 +206,6 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
       }
     }
   }
-  const bool inPlace = last_.get() == &K;
   if (!anyRank(*rowMap->getComm(), !samePattern)) {
     const auto local = last_->getLocalMatrixDevice();
     for (std::size_t r = 0; r < numRows; ++r) {
@@ -237,26 +240,30 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
     rows[r + 1] = rows[r] + count;
   }
   const std::size_t nnz = rows[numRows];
+  // Row r of K + S written at rows[r] of the buffers. copy_backward: in
+  // place the destination is the source shifted right (or the same).
+  auto writeRow = [&](std::size_t r) {
+    std::size_t at = rows[r];
+    if (start[r] == start[r + 1]) {
+      const auto from = kRows(r), count = kRows(r + 1) - kRows(r);
+      if (kEntries.data() + from == indexBuffer_.data() + at) return;  // in place and not moved
+      std::copy_backward(kEntries.data() + from, kEntries.data() + from + count, indexBuffer_.data() + at + count);
+      std::copy_backward(kValues.data() + from, kValues.data() + from + count, valueBuffer_.data() + at + count);
+      return;
+    }
+    mergeRow(r);
+    for (const auto& [column, value] : merged) {
+      indexBuffer_(at) = column;
+      valueBuffer_(at) = value;
+      ++at;
+    }
+  };
   if (inPlace && indexBuffer_.extent(0) >= nnz) {
     // K is the last result, refilled: its rows only grow (all of K's entries
     // stay), so row r moves to an offset >= its old one. From the last row
     // backwards, each row is read (mergeRow copies it) before anything is
     // written over it; no second matrix of K's size is made.
-    for (std::size_t r = numRows; r-- > 0;) {
-      std::size_t at = rows[r];
-      if (start[r] == start[r + 1]) {
-        const auto from = kRows(r), count = kRows(r + 1) - kRows(r);
-        std::copy_backward(kEntries.data() + from, kEntries.data() + from + count, indexBuffer_.data() + at + count);
-        std::copy_backward(kValues.data() + from, kValues.data() + from + count, valueBuffer_.data() + at + count);
-      } else {
-        mergeRow(r);
-        for (const auto& [column, value] : merged) {
-          indexBuffer_(at) = column;
-          valueBuffer_(at) = value;
-          ++at;
-        }
-      }
-    }
+    for (std::size_t r = numRows; r-- > 0;) writeRow(r);
     std::copy(rows.begin(), rows.end(), rowBuffer_.data());
     ++inPlaceMerges_;
   } else {
@@ -278,22 +285,7 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
       indexBuffer_ = decltype(indexBuffer_)(Kokkos::ViewAllocateWithoutInitializing("columns"), capacity);
       valueBuffer_ = decltype(valueBuffer_)(Kokkos::ViewAllocateWithoutInitializing("values"), capacity);
     }
-    for (std::size_t r = 0; r < numRows; ++r) {
-      std::size_t at = rows[r];
-      if (start[r] == start[r + 1]) {
-        for (auto k = kRows(r); k < kRows(r + 1); ++k, ++at) {
-          indexBuffer_(at) = kEntries(k);
-          valueBuffer_(at) = kValues(k);
-        }
-      } else {
-        mergeRow(r);
-        for (const auto& [column, value] : merged) {
-          indexBuffer_(at) = column;
-          valueBuffer_(at) = value;
-          ++at;
-        }
-      }
-    }
+    for (std::size_t r = 0; r < numRows; ++r) writeRow(r);
   }
   const auto range = std::make_pair(std::size_t(0), nnz);
   const auto indexView = Kokkos::subview(indexBuffer_, range);
