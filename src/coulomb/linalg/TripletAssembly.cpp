@@ -29,9 +29,15 @@ std::vector<double> toOwners(const std::vector<double>& records, int width, cons
   // rank: Map::getRemoteIndexList returns at once for an empty list, skipping
   // the collective set-up of its directory that the ranks with entries do —
   // a rank without contributions would then desynchronise the others.
+  // Rows this rank owns (most of them: contributions are emitted by the
+  // owner of the slave node) need no lookup.
+  const int rank = comm.getRank();
+  auto ownedHere = [&](GlobalOrdinal row) { return map.getLocalElement(row) != Teuchos::OrdinalTraits<LocalOrdinal>::invalid(); };
   std::vector<GlobalOrdinal> distinct;
-  distinct.reserve(n + 1);
-  for (std::size_t i = 0; i < n; ++i) distinct.push_back(static_cast<GlobalOrdinal>(records[i * width]));
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto row = static_cast<GlobalOrdinal>(records[i * width]);
+    if (!ownedHere(row)) distinct.push_back(row);
+  }
   distinct.push_back(map.getMinAllGlobalIndex());
   std::sort(distinct.begin(), distinct.end());
   distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
@@ -44,6 +50,10 @@ std::vector<double> toOwners(const std::vector<double>& records, int width, cons
   std::string failure;
   for (std::size_t i = 0; i < n; ++i) {
     const auto row = static_cast<GlobalOrdinal>(records[i * width]);
+    if (ownedHere(row)) {
+      owners[i] = rank;
+      continue;
+    }
     owners[i] = distinctOwners[std::lower_bound(distinct.begin(), distinct.end(), row) - distinct.begin()];
     if ((owners[i] < 0 || owners[i] >= size) && failure.empty())
       failure = "internal: contribution to row " + std::to_string(row) + " outside the DoF map";
