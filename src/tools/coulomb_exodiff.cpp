@@ -30,7 +30,9 @@ double largest(const std::vector<double>& values) {
 std::string family(const std::string& name) { return name.substr(0, name.find('_')); }
 
 bool isForce(const std::string& global) {
-  return global.rfind("reaction_", 0) == 0 || global.find("force") != std::string::npos;
+  for (const char* prefix : {"reaction_", "contact_force_", "contact_normal_force_", "contact_tangential_force_"})
+    if (global.rfind(prefix, 0) == 0) return true;
+  return false;
 }
 
 bool compare(const std::vector<double>& a, const std::vector<double>& b, double tolerance, double scale, double& worst) {

@@ -18,7 +18,7 @@ ShippedDeck::ShippedDeck(const std::string& name, const std::string& mesh) {
 }
 
 void ShippedDeck::fixLinearTolerance() {
-  EXPECT_EQ(text.find("name=\"Newton\""), std::string::npos);
+  ASSERT_EQ(text.find("name=\"Newton\""), std::string::npos) << "the deck has a Newton list already";
   const auto end = text.rfind("</ParameterList>");
   ASSERT_NE(end, std::string::npos);
   text.insert(end, "<ParameterList name=\"Newton\"><Parameter name=\"Linear Tolerance\" type=\"string\" "

@@ -265,23 +265,30 @@ TEST(TripletAssembly, MatrixSumCompletesTheLastResultInPlace) {
   };
   linalg::MatrixSum sum;
   const auto s1 = shiftedFromLastRank(*map, 1.0, n / 2), s2 = shiftedFromLastRank(*map, -3.0, n / 2);
-  // A few new entries (first rows of every rank, column g + 1): they fit in the buffers' room.
+  // Two new entries in each rank's first two rows, at a column 25 left of
+  // s1's (from np = 3 a column this rank's J does not have yet: a new column
+  // map); they fit in the buffers' 2 % room.
   std::vector<linalg::MatrixTriplet> s3;
-  for (int rank = 0; rank < comm->getSize(); ++rank)
-    for (GlobalOrdinal g = 100 * rank; g < 100 * rank + 2; ++g) s3.push_back({g, g + 1, 0.5 * static_cast<double>(g + 1)});
-  if (comm->getRank() != 0) s3.clear();
+  for (LocalOrdinal i = 0; i < 2; ++i) {
+    const GlobalOrdinal g = map->getGlobalElement(i);
+    s3.push_back({g, (g + n / 2 - 25 + n) % n, 0.5 * static_cast<double>(g + 1)});
+  }
   auto J = sum.add(*K, s1);
   expectSum(J, 1.0, s1);
+  EXPECT_FALSE(sum.grownBeyond(2.0));  // made from K apart: only s1's entries beyond K's
   refill(*J, 2.0);
   auto same = sum.add(*J, s2);  // the same pattern: completed in the same matrix
   EXPECT_EQ(same.get(), J.get());
   expectSum(same, 2.0, s2);
   refill(*same, -1.0);
+  const auto entriesBefore = same->getGlobalNumEntries();
   auto grown = sum.add(*same, s3);  // s1's entries stay (zero), s3's are merged in
   EXPECT_EQ(sum.last().get(), grown.get());
   EXPECT_EQ(sum.inPlaceMerges(), 1);
   expectSum(grown, -1.0, s3);
-  EXPECT_GE(grown->getGlobalNumEntries(), same->getGlobalNumEntries());
+  // s1's couplings stay as zeros: ~n / p entries beyond K's for 2 triplets.
+  EXPECT_TRUE(sum.grownBeyond(2.0));
+  EXPECT_EQ(grown->getGlobalNumEntries(), entriesBefore + 2 * static_cast<Tpetra::global_size_t>(comm->getSize()));
   refill(*grown, 4.0);
   std::vector<linalg::MatrixTriplet> dense;  // more than the buffers hold
   for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {

@@ -1,6 +1,9 @@
 // The adaptive Krylov tolerance of a Newton iteration (solver/LinearTolerance.hpp).
 #include <gtest/gtest.h>
 
+#include <Teuchos_ParameterList.hpp>
+
+#include "coulomb/solver/Deck.hpp"
 #include "coulomb/solver/LinearTolerance.hpp"
 
 namespace coulomb::solver {
@@ -11,6 +14,14 @@ const LinearToleranceSettings kDefaults;
 TEST(LinearTolerance, FirstIterationOfAStepSolvesToTheMaximum) {
   // Far from the Newton tolerance, with no rate yet: the loosest tolerance.
   EXPECT_DOUBLE_EQ(linearTolerance(kDefaults, 100.0, -1.0, 1e-6), kDefaults.maximum);
+}
+
+TEST(LinearTolerance, WithoutContactTheFirstSolveMeetsTheTarget) {
+  // No active set to find: a linear problem must converge in one iteration,
+  // so the first solve goes to 0.1 x target / ||f|| (1e-9 here).
+  LinearToleranceSettings bulk = kDefaults;
+  bulk.looseFirstIteration = false;
+  EXPECT_NEAR(linearTolerance(bulk, 100.0, -1.0, 1e-6), 1e-9, 1e-21);
 }
 
 TEST(LinearTolerance, FastConvergenceTightensAsTheSquareOfTheRate) {
@@ -36,6 +47,40 @@ TEST(LinearTolerance, NeverBelowTheMinimum) {
   LinearToleranceSettings loose = kDefaults;
   loose.maximum = 1e-2;
   EXPECT_DOUBLE_EQ(linearTolerance(loose, 100.0, -1.0, 1e-6), 1e-2);
+  // A maximum below the minimum: the minimum (no inverted clamp).
+  LinearToleranceSettings inverted = kDefaults;
+  inverted.maximum = 1e-12;
+  EXPECT_DOUBLE_EQ(linearTolerance(inverted, 100.0, -1.0, 1e-6), kDefaults.minimum);
+}
+
+Teuchos::ParameterList deckWithMesh() {
+  Teuchos::ParameterList deck("Coulomb");
+  deck.sublist("Mesh").set("File", std::string("mesh.e"));
+  return deck;
+}
+
+TEST(LinearToleranceDeck, AdaptiveByDefaultWithItsMaximumFromTheDeck) {
+  auto deck = deckWithMesh();
+  EXPECT_TRUE(parseRunSettings(deck, "deck.xml").newton.linearTolerance.adaptive);
+  EXPECT_DOUBLE_EQ(parseRunSettings(deck, "deck.xml").newton.linearTolerance.maximum, 1e-3);
+  deck.sublist("Newton").set("Maximum Linear Tolerance", 1e-4);
+  EXPECT_DOUBLE_EQ(parseRunSettings(deck, "deck.xml").newton.linearTolerance.maximum, 1e-4);
+  deck.sublist("Newton").set("Linear Tolerance", std::string("Fixed"));
+  EXPECT_FALSE(parseRunSettings(deck, "deck.xml").newton.linearTolerance.adaptive);
+}
+
+TEST(LinearToleranceDeck, NoxToleranceOrForcingTermInTheDeckMeansFixed) {
+  // What the deck gives NOX is not overridden silently.
+  auto tolerance = deckWithMesh();
+  tolerance.sublist("Nonlinear Solver").sublist("Direction").sublist("Newton").sublist("Linear Solver").set(
+      "Tolerance", 1e-6);
+  EXPECT_FALSE(parseRunSettings(tolerance, "deck.xml").newton.linearTolerance.adaptive);
+  auto forcing = deckWithMesh();
+  forcing.sublist("Nonlinear Solver").sublist("Direction").sublist("Newton").set("Forcing Term Method",
+                                                                                   std::string("Type 2"));
+  EXPECT_FALSE(parseRunSettings(forcing, "deck.xml").newton.linearTolerance.adaptive);
+  EXPECT_TRUE(NewtonSolver::noxSetsLinearTolerance(forcing.sublist("Nonlinear Solver")));
+  EXPECT_FALSE(NewtonSolver::noxSetsLinearTolerance(deckWithMesh()));
 }
 
 }  // namespace

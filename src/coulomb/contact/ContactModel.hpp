@@ -75,6 +75,10 @@ public:
   /// accepts it, and condensedTangent() then adds the interface rows in
   /// place — K never has a matrix of its own (hertz3d_r2: 39 MB less at the peak).
   Teuchos::RCP<CrsMatrix> tangentStorage() const { return tangentSum_.last(); }
+  /// The storage holds many couplings the contact no longer has (a sliding
+  /// contact leaves them as zeros, as the pattern only grows in place): more
+  /// than twice the interface triplets of the last iterate beyond K's. Local.
+  bool tangentStorageStale() const { return tangentSum_.grownBeyond(2.0); }
 
   /// `Contact/System Form` = Saddle Point: the multipliers are Newton
   /// unknowns (MultiplierBlock in ContactPair.hpp) instead of being condensed.

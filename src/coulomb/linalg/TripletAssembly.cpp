@@ -130,6 +130,8 @@ Teuchos::RCP<CrsMatrix> addTriplets(const CrsMatrix& K, const std::vector<Matrix
 Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<MatrixTriplet>& triplets) {
   const auto rowMap = K.getRowMap();
   const auto mine = tripletsToOwners(triplets, *rowMap);
+  lastTriplets_ = mine.size() / 3;
+  if (last_.get() != &K) baseEntries_ = K.getNodeNumEntries();
 
   // Column map: K's, then the columns only the triplets have (in order of appearance).
   const auto kColumns = K.getColMap();
@@ -256,7 +258,8 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
     std::size_t at = rows[r];
     if (start[r] == start[r + 1]) {
       const auto from = kRows(r), count = kRows(r + 1) - kRows(r);
-      if (kEntries.data() + from == indexBuffer_.data() + at) return;  // in place and not moved
+      if (kEntries.data() + from == indexBuffer_.data() + at && kValues.data() + from == valueBuffer_.data() + at)
+        return;  // in place and not moved
       std::copy_backward(kEntries.data() + from, kEntries.data() + from + count, indexBuffer_.data() + at + count);
       std::copy_backward(kValues.data() + from, kValues.data() + from + count, valueBuffer_.data() + at + count);
       return;
@@ -332,6 +335,11 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
   lastImporter_ = importer;
   lastDomainMap_ = K.getDomainMap().get();
   return last_;
+}
+
+bool MatrixSum::grownBeyond(double factor) const {
+  return !last_.is_null() &&
+         static_cast<double>(last_->getNodeNumEntries()) > static_cast<double>(baseEntries_) + factor * static_cast<double>(lastTriplets_);
 }
 
 }  // namespace coulomb::linalg

@@ -67,6 +67,12 @@ public:
   int reuses() const { return reuses_; }
   /// Calls that merged a grown pattern into K's own buffers (K = last()).
   int inPlaceMerges() const { return inPlaceMerges_; }
+  /// This rank's last result has more than `factor` x (triplets of the last
+  /// call) entries beyond those of the last K that was not the result itself.
+  /// In place the pattern only grows (a sliding contact leaves its old
+  /// couplings as zeros): the caller then assembles K apart once, to start
+  /// from the current couplings again. Local.
+  bool grownBeyond(double factor) const;
 
 private:
   using LocalMatrix = CrsMatrix::local_matrix_device_type;
@@ -81,6 +87,8 @@ private:
   const Map* lastDomainMap_ = nullptr;       ///< K's domain map then (the importer's source)
   int reuses_ = 0;
   int inPlaceMerges_ = 0;
+  std::size_t baseEntries_ = 0;   ///< entries of the last K that was not the result itself
+  std::size_t lastTriplets_ = 0;  ///< triplets this rank received in the last call
 };
 
 /// @brief Collective: adds every rank's `entries` into `owned` (on its map).

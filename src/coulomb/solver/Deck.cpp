@@ -62,7 +62,7 @@ Teuchos::RCP<const ParameterList> validDeckParameters() {
                "default 1e-10, or its forcing term); a deck that sets either NOX key gets Fixed",
                io::oneOf({"Adaptive", "Fixed"}));
     newton.set("Maximum Linear Tolerance", defaults.linearTolerance.maximum,
-               "loosest relative Krylov tolerance of the Adaptive choice", range<double>(1e-14, 0.5));
+               "loosest relative Krylov tolerance of the Adaptive choice", range<double>(1e-10, 0.5));
 
     ParameterList& output = valid->sublist("Output", false, "Results");
     output.set("File", "", "Exodus II result file, relative to the deck's folder (default: deck name with .e)");
@@ -90,20 +90,6 @@ Teuchos::RCP<ParameterList> readDeck(const std::string& path) {
   return deck;
 }
 
-namespace {
-
-/// The deck's NOX list chooses the Krylov tolerance itself: "Direction"/"Newton"/
-/// "Linear Solver"/"Tolerance" or a "Forcing Term Method".
-bool noxSetsLinearTolerance(const ParameterList& nox) {
-  const auto* direction = nox.getPtr<ParameterList>("Direction");
-  const auto* newton = direction ? direction->getPtr<ParameterList>("Newton") : nullptr;
-  if (!newton) return false;
-  const auto* linear = newton->getPtr<ParameterList>("Linear Solver");
-  return newton->isParameter("Forcing Term Method") || (linear && linear->isParameter("Tolerance"));
-}
-
-}  // namespace
-
 RunSettings parseRunSettings(const ParameterList& deck, const std::string& deckPath) {
   const ParameterList& valid = *validDeckParameters();
   const ParameterList empty;
@@ -120,7 +106,7 @@ RunSettings parseRunSettings(const ParameterList& deck, const std::string& deckP
   run.newton.relativeTolerance = io::valueOrDefault<double>(sub("Newton"), newton, "Relative Tolerance");
   run.newton.absoluteTolerance = io::valueOrDefault<double>(sub("Newton"), newton, "Absolute Tolerance");
   run.newton.linearTolerance.maximum = io::valueOrDefault<double>(sub("Newton"), newton, "Maximum Linear Tolerance");
-  const bool userFixesLinearTolerance = noxSetsLinearTolerance(sub("Nonlinear Solver"));
+  const bool userFixesLinearTolerance = NewtonSolver::noxSetsLinearTolerance(sub("Nonlinear Solver"));
   const auto linearTolerance = io::valueOrDefault<std::string>(sub("Newton"), newton, "Linear Tolerance");
   if (userFixesLinearTolerance && sub("Newton").isParameter("Linear Tolerance") && linearTolerance == "Adaptive")
     throw Error("deck: 'Newton/Linear Tolerance' = Adaptive contradicts the NOX 'Nonlinear Solver/Direction/Newton' "

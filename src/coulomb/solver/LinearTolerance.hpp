@@ -18,6 +18,10 @@ struct LinearToleranceSettings {
   double minimum = 1e-10;     ///< tightest eta (NOX's fixed default)
   double quadraticFactor = 0.9;  ///< gamma of the Eisenstat-Walker choice 2 (alpha = 2)
   double targetFraction = 0.1;   ///< the last solve leaves at most this fraction of the Newton tolerance
+  /// The first solve of a step at `maximum` (contact: the active set is read
+  /// from an iterate that is far off anyway); else as tight as the Newton
+  /// target asks, so that a linear problem still takes one iteration.
+  bool looseFirstIteration = true;
 };
 
 /// @brief eta_k for the iteration at residual norm `normF`.
@@ -30,8 +34,8 @@ struct LinearToleranceSettings {
 ///    keeps Newton's rate: the linear error stays below the nonlinear one;
 ///  - target: a linear residual of targetFraction x target is all the last
 ///    iteration needs, however far ||f_k|| is above it.
-/// At a step's first iteration there is no rate yet: eta = maximum unless the
-/// target allows more.
+/// At a step's first iteration there is no rate yet: eta = maximum
+/// (looseFirstIteration) or what the target asks.
 double linearTolerance(const LinearToleranceSettings& settings, double normF, double normFPrevious, double target);
 
 }  // namespace coulomb::solver

@@ -136,7 +136,9 @@ void ModelEvaluator::evalContact(const Vector& x, Vector* f, const Teuchos::RCP<
     // Condensed form: K is assembled into the last condensed tangent (its
     // pattern holds K's), which condensedTangent() completes in place.
     auto storage = saddlePoint_ ? Teuchos::null : contact_->tangentStorage();
-    const bool inPlace = !storage.is_null() && !anyRank(*map_->getComm(), !assembler_.acceptsTangent(*storage));
+    const bool inPlace =
+        !storage.is_null() &&
+        !anyRank(*map_->getComm(), !assembler_.acceptsTangent(*storage) || contact_->tangentStorageStale());
     if (inPlace) bulkTangent_ = storage;
     else if (bulkTangent_.is_null()) bulkTangent_ = assembler_.createMatrix();
     storage = Teuchos::null;

@@ -176,6 +176,14 @@ Teuchos::RCP<Teuchos::ParameterList> NewtonSolver::defaultParameters() {
   return p;
 }
 
+bool NewtonSolver::noxSetsLinearTolerance(const Teuchos::ParameterList& nox) {
+  const auto* direction = nox.getPtr<Teuchos::ParameterList>("Direction");
+  const auto* newton = direction ? direction->getPtr<Teuchos::ParameterList>("Newton") : nullptr;
+  if (!newton) return false;
+  const auto* linear = newton->getPtr<Teuchos::ParameterList>("Linear Solver");
+  return newton->isParameter("Forcing Term Method") || (linear && linear->isParameter("Tolerance"));
+}
+
 NewtonSolver::NewtonSolver(Teuchos::RCP<ModelEvaluator> model, const Teuchos::ParameterList& noxParameters,
                            const NewtonSettings& settings, std::ostream* console,
                            const contact::ContactModel* contact)
@@ -194,9 +202,10 @@ NewtonReport NewtonSolver::solve(Vector& u) {
   NOX::Thyra::Vector initialGuess(thyraU);
   auto group = Teuchos::rcp(new CountingGroup(initialGuess, model_));
   group->computeF();
-  if (settings_.linearTolerance.adaptive) {
+  if (settings_.linearTolerance.adaptive && !noxSetsLinearTolerance(*noxParameters_)) {
     auto forcing = std::make_shared<CountingGroup::Forcing>();
     forcing->settings = settings_.linearTolerance;
+    forcing->settings.looseFirstIteration = contact_ != nullptr;
     forcing->target = std::max(settings_.absoluteTolerance, settings_.relativeTolerance * group->getNormF());
     group->setForcing(forcing);
   }
