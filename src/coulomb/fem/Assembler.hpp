@@ -38,7 +38,9 @@ public:
   /// True when assemble() can fill `matrix` in place: it has the owned rows,
   /// every entry of the owned graph, and a column map that starts with the
   /// owned graph's (a condensed contact tangent built on K by
-  /// linalg::MatrixSum). Its other entries are zeroed by assemble(). Local.
+  /// linalg::MatrixSum). Its other entries are zeroed by assemble(), which
+  /// checks only the rows and columns: a caller passing another matrix than
+  /// createMatrix()'s asks this first. Local.
   bool acceptsTangent(const CrsMatrix& matrix) const;
   const DirichletConstraints& constraints() const { return *constraints_; }
 
