@@ -17,27 +17,42 @@ namespace coulomb::linalg {
 
 namespace {
 
-/// Sends record r (`width` doubles each, row GID first) to the owner of its
-/// row; returns the records this rank owns (its own included).
+/// Local index of `row` in `map`, or invalid. Contributions come in runs of
+/// one row (a node's rows, a combination row), so the last answer is kept:
+/// on a non-contiguous map (np > 1) each lookup is a hash probe.
+class RowLookup {
+public:
+  explicit RowLookup(const Map& map) : map_(map) {}
+  LocalOrdinal operator()(GlobalOrdinal row) {
+    if (row != lastRow_) {
+      lastRow_ = row;
+      lastLocal_ = map_.getLocalElement(row);
+    }
+    return lastLocal_;
+  }
+  static LocalOrdinal invalid() { return Teuchos::OrdinalTraits<LocalOrdinal>::invalid(); }
+
+private:
+  const Map& map_;
+  GlobalOrdinal lastRow_ = -1;
+  LocalOrdinal lastLocal_ = invalid();
+};
+
+/// Sends record r (`width` doubles each, row GID first) whose row this rank
+/// does not own to the owner of that row; returns the records of other ranks
+/// for rows this rank owns. The caller keeps its own records where they are.
 std::vector<double> toOwners(const std::vector<double>& records, int width, const Map& map) {
   const auto& comm = *map.getComm();
   const int size = comm.getSize();
   const std::size_t n = records.size() / width;
-  if (size == 1) return records;  // one rank owns every row (rows come from the DoF map)
+  if (size == 1) return {};  // one rank owns every row (rows come from the DoF map)
   // The owner of each distinct row, looked up once (Tpetra's directory is
   // given a sorted list without duplicates). One extra, valid index on every
   // rank: Map::getRemoteIndexList returns at once for an empty list, skipping
   // the collective set-up of its directory that the ranks with entries do —
   // a rank without contributions would then desynchronise the others.
-  // Rows this rank owns (most of them: contributions are emitted by the
-  // owner of the slave node) need no lookup.
-  const int rank = comm.getRank();
-  auto ownedHere = [&](GlobalOrdinal row) { return map.getLocalElement(row) != Teuchos::OrdinalTraits<LocalOrdinal>::invalid(); };
   std::vector<GlobalOrdinal> distinct;
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto row = static_cast<GlobalOrdinal>(records[i * width]);
-    if (!ownedHere(row)) distinct.push_back(row);
-  }
+  for (std::size_t i = 0; i < n; ++i) distinct.push_back(static_cast<GlobalOrdinal>(records[i * width]));
   distinct.push_back(map.getMinAllGlobalIndex());
   std::sort(distinct.begin(), distinct.end());
   distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
@@ -46,47 +61,64 @@ std::vector<double> toOwners(const std::vector<double>& records, int width, cons
   map.getRemoteIndexList(Teuchos::ArrayView<const GlobalOrdinal>(distinct.data(), distinct.size()),
                          Teuchos::ArrayView<int>(distinctOwners.data(), distinct.size()),
                          Teuchos::ArrayView<LocalOrdinal>(locals.data(), distinct.size()));
-  std::vector<int> owners(n);
+  std::vector<std::vector<double>> send(static_cast<std::size_t>(size));
   std::string failure;
   for (std::size_t i = 0; i < n; ++i) {
     const auto row = static_cast<GlobalOrdinal>(records[i * width]);
-    if (ownedHere(row)) {
-      owners[i] = rank;
-      continue;
-    }
-    owners[i] = distinctOwners[std::lower_bound(distinct.begin(), distinct.end(), row) - distinct.begin()];
-    if ((owners[i] < 0 || owners[i] >= size) && failure.empty())
+    const int owner = distinctOwners[std::lower_bound(distinct.begin(), distinct.end(), row) - distinct.begin()];
+    if ((owner < 0 || owner >= size) && failure.empty())
       failure = "internal: contribution to row " + std::to_string(row) + " outside the DoF map";
+    if (failure.empty())
+      send[owner].insert(send[owner].end(), records.begin() + i * width, records.begin() + (i + 1) * width);
   }
   throwIfAnyRankFailed(comm, failure);
-
-  std::vector<std::vector<double>> send(static_cast<std::size_t>(size));
-  for (std::size_t i = 0; i < n; ++i)
-    send[owners[i]].insert(send[owners[i]].end(), records.begin() + i * width, records.begin() + (i + 1) * width);
   return exchangeByRank(comm, std::move(send));
 }
 
-/// The triplets of every rank whose row this rank owns, as (row, column,
-/// value) records of doubles (global indices are exact below 2^53).
-std::vector<double> tripletsToOwners(const std::vector<MatrixTriplet>& triplets, const Map& map) {
-  std::vector<double> records;
-  records.reserve(triplets.size() * 3);
-  for (const auto& t : triplets) {
-    records.push_back(static_cast<double>(t.row));
-    records.push_back(static_cast<double>(t.column));
-    records.push_back(t.value);
+/// Matrix triplets routed to the owners of their rows: this rank's own
+/// triplets stay in the caller's vector (most of them: contributions are
+/// emitted by the owner of the slave node), only the others travel.
+struct RoutedTriplets {
+  std::vector<LocalOrdinal> localRow;  ///< per input triplet: its local row here, or invalid (sent away)
+  std::vector<MatrixTriplet> received;  ///< other ranks' triplets for rows owned here
+  std::vector<LocalOrdinal> receivedRow;  ///< their local rows
+};
+
+/// Collective.
+RoutedTriplets routeToOwners(const std::vector<MatrixTriplet>& triplets, const Map& map) {
+  RoutedTriplets routed;
+  RowLookup local(map);
+  routed.localRow.resize(triplets.size());
+  std::vector<double> away;  // (row, column, value) records of rows owned elsewhere
+  for (std::size_t i = 0; i < triplets.size(); ++i) {
+    routed.localRow[i] = local(triplets[i].row);
+    if (routed.localRow[i] == RowLookup::invalid())
+      away.insert(away.end(), {static_cast<double>(triplets[i].row), static_cast<double>(triplets[i].column),
+                               triplets[i].value});
   }
-  return toOwners(records, 3, map);
+  if (map.getComm()->getSize() == 1) {
+    COULOMB_REQUIRE(away.empty(), "internal: contribution to row " << static_cast<GlobalOrdinal>(away[0])
+                                                                   << " outside the DoF map");
+    return routed;
+  }
+  const auto records = toOwners(away, 3, map);
+  for (std::size_t i = 0; i < records.size(); i += 3) {
+    const auto row = static_cast<GlobalOrdinal>(records[i]);
+    routed.received.push_back({row, static_cast<GlobalOrdinal>(records[i + 1]), records[i + 2]});
+    routed.receivedRow.push_back(local(row));
+  }
+  return routed;
 }
 
 }  // namespace
 
 Teuchos::RCP<CrsMatrix> matrixFromTriplets(const std::vector<MatrixTriplet>& triplets,
                                            const Teuchos::RCP<const Map>& map) {
-  const auto mine = tripletsToOwners(triplets, *map);
+  const auto routed = routeToOwners(triplets, *map);
   std::map<GlobalOrdinal, std::map<GlobalOrdinal, double>> rows;
-  for (std::size_t i = 0; i < mine.size(); i += 3)
-    rows[static_cast<GlobalOrdinal>(mine[i])][static_cast<GlobalOrdinal>(mine[i + 1])] += mine[i + 2];
+  for (std::size_t i = 0; i < triplets.size(); ++i)
+    if (routed.localRow[i] != RowLookup::invalid()) rows[triplets[i].row][triplets[i].column] += triplets[i].value;
+  for (const auto& t : routed.received) rows[t.row][t.column] += t.value;
 
   const std::size_t numLocal = map->getNodeNumElements();
   Teuchos::Array<std::size_t> counts(numLocal, 0);
@@ -109,17 +141,22 @@ Teuchos::RCP<CrsMatrix> matrixFromTriplets(const std::vector<MatrixTriplet>& tri
 }
 
 void addEntries(const std::vector<VectorEntry>& entries, Vector& owned) {
-  std::vector<double> records;
-  records.reserve(entries.size() * 2);
-  for (const auto& e : entries) {
-    records.push_back(static_cast<double>(e.row));
-    records.push_back(e.value);
-  }
-  const auto mine = toOwners(records, 2, *owned.getMap());
   const auto& map = *owned.getMap();
+  RowLookup local(map);
+  std::vector<double> away;  // (row, value) records of rows owned elsewhere
   auto data = owned.getDataNonConst(0);
-  for (std::size_t i = 0; i < mine.size(); i += 2)
-    data[map.getLocalElement(static_cast<GlobalOrdinal>(mine[i]))] += mine[i + 1];
+  for (const auto& e : entries) {
+    const LocalOrdinal i = local(e.row);
+    if (i != RowLookup::invalid()) data[i] += e.value;
+    else away.insert(away.end(), {static_cast<double>(e.row), e.value});
+  }
+  if (map.getComm()->getSize() == 1) {
+    COULOMB_REQUIRE(away.empty(), "internal: contribution to row " << static_cast<GlobalOrdinal>(away[0])
+                                                                   << " outside the DoF map");
+    return;
+  }
+  const auto mine = toOwners(away, 2, map);
+  for (std::size_t i = 0; i < mine.size(); i += 2) data[local(static_cast<GlobalOrdinal>(mine[i]))] += mine[i + 1];
 }
 
 Teuchos::RCP<CrsMatrix> addTriplets(const CrsMatrix& K, const std::vector<MatrixTriplet>& triplets) {
@@ -129,8 +166,7 @@ Teuchos::RCP<CrsMatrix> addTriplets(const CrsMatrix& K, const std::vector<Matrix
 
 Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<MatrixTriplet>& triplets) {
   const auto rowMap = K.getRowMap();
-  const auto mine = tripletsToOwners(triplets, *rowMap);
-  lastTriplets_ = mine.size() / 3;
+  const auto routed = routeToOwners(triplets, *rowMap);
   if (last_.get() != &K) baseEntries_ = K.getNodeNumEntries();
 
   // Column map: K's, then the columns only the triplets have (in order of appearance).
@@ -138,32 +174,39 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
   columnGids_.assign(kColumns->getNodeElementList().begin(), kColumns->getNodeElementList().end());
   const std::size_t kColumnCount = columnGids_.size();
   std::unordered_map<GlobalOrdinal, LocalOrdinal> extra;
-  const std::size_t n = mine.size() / 3;
-  std::vector<LocalOrdinal> localRow(n), localColumn(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto row = static_cast<GlobalOrdinal>(mine[3 * i]);
-    const auto column = static_cast<GlobalOrdinal>(mine[3 * i + 1]);
-    localRow[i] = rowMap->getLocalElement(row);
+  auto localColumnOf = [&](GlobalOrdinal column) {
     LocalOrdinal c = kColumns->getLocalElement(column);
-    if (c == Teuchos::OrdinalTraits<LocalOrdinal>::invalid()) {
-      const auto it = extra.find(column);
-      if (it != extra.end()) {
-        c = it->second;
-      } else {
-        c = static_cast<LocalOrdinal>(columnGids_.size());
-        columnGids_.push_back(column);
-        extra.emplace(column, c);
-      }
-    }
-    localColumn[i] = c;
-  }
-  // Triplets grouped by local row (counting sort).
+    if (c != Teuchos::OrdinalTraits<LocalOrdinal>::invalid()) return c;
+    const auto it = extra.find(column);
+    if (it != extra.end()) return it->second;
+    c = static_cast<LocalOrdinal>(columnGids_.size());
+    columnGids_.push_back(column);
+    extra.emplace(column, c);
+    return c;
+  };
+  // This rank's triplets (its own, then those received) grouped by local
+  // row (counting sort) as (local column, value), each row sorted by column.
   const std::size_t numRows = rowMap->getNodeNumElements();
   std::vector<std::size_t> start(numRows + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) ++start[localRow[i] + 1];
+  for (std::size_t i = 0; i < triplets.size(); ++i)
+    if (routed.localRow[i] != RowLookup::invalid()) ++start[routed.localRow[i] + 1];
+  for (const auto row : routed.receivedRow) ++start[row + 1];
   for (std::size_t r = 0; r < numRows; ++r) start[r + 1] += start[r];
-  std::vector<std::size_t> order(n), cursor(start.begin(), start.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) order[cursor[localRow[i]]++] = i;
+  const std::size_t n = start[numRows];
+  lastTriplets_ = n;
+  std::vector<std::pair<LocalOrdinal, double>> grouped(n);
+  {
+    std::vector<std::size_t> cursor(start.begin(), start.end() - 1);
+    for (std::size_t i = 0; i < triplets.size(); ++i)
+      if (routed.localRow[i] != RowLookup::invalid())
+        grouped[cursor[routed.localRow[i]]++] = {localColumnOf(triplets[i].column), triplets[i].value};
+    for (std::size_t i = 0; i < routed.received.size(); ++i)
+      grouped[cursor[routed.receivedRow[i]]++] = {localColumnOf(routed.received[i].column), routed.received[i].value};
+  }
+  for (std::size_t r = 0; r < numRows; ++r)
+    if (start[r + 1] - start[r] > 1)
+      std::sort(grouped.begin() + static_cast<std::ptrdiff_t>(start[r]), grouped.begin() + static_cast<std::ptrdiff_t>(start[r + 1]),
+                [](const auto& a, const auto& b) { return a.first < b.first; });
 
   // K's compressed rows, read directly (Serial node: the device view is host memory).
   const auto localK = K.getLocalMatrixDevice();
@@ -173,18 +216,15 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
   // Row r of K + S: K's entries with the triplets of the row added (a binary
   // search finds an existing column; new ones, duplicates summed, are merged
   // in), sorted by local column as K's rows are.
-  std::vector<std::pair<LocalOrdinal, double>> added, merged;
+  std::vector<std::pair<LocalOrdinal, double>> merged;
   auto mergeRow = [&](std::size_t r) {
     merged.clear();
     for (auto k = kRows(r); k < kRows(r + 1); ++k) merged.push_back({kEntries(k), kValues(k)});
     const std::size_t kCount = merged.size();
-    added.clear();
-    for (std::size_t k = start[r]; k < start[r + 1]; ++k) added.push_back({localColumn[order[k]], mine[3 * order[k] + 2]});
-    std::sort(added.begin(), added.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (std::size_t k = 0; k < added.size();) {
-      const LocalOrdinal c = added[k].first;
+    for (std::size_t k = start[r]; k < start[r + 1];) {
+      const LocalOrdinal c = grouped[k].first;
       double v = 0;
-      for (; k < added.size() && added[k].first == c; ++k) v += added[k].second;
+      for (; k < start[r + 1] && grouped[k].first == c; ++k) v += grouped[k].second;
       const auto end = merged.begin() + static_cast<std::ptrdiff_t>(kCount);
       const auto it = std::lower_bound(merged.begin(), end, c, [](const auto& e, LocalOrdinal x) { return e.first < x; });
       if (it != end && it->first == c) it->second += v;
