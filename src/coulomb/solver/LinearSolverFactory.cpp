@@ -116,6 +116,32 @@ void keepUserSmoother(const Teuchos::ParameterList& user, Teuchos::ParameterList
   for (const auto& name : names) muelu.remove(name);
 }
 
+/// The defaults fill in what the deck leaves out wherever the deck's choice
+/// is the default's: a deck that names "Belos" and "MueLu" (the defaults)
+/// gets the same tuned MueLu and GMRES keys as one that names nothing
+/// (hertz3d_r2: 16.4 s against 27.9 s and 446 MB with MueLu's own defaults).
+/// A deck that picks another solver, Krylov method or preconditioner gets
+/// exactly what it wrote for that choice.
+void fillDefaultsOfSameChoices(const Teuchos::ParameterList& defaults, Teuchos::ParameterList& user) {
+  auto sameChoice = [](const Teuchos::ParameterList& d, Teuchos::ParameterList& u, const std::string& key) {
+    if (!u.isParameter(key)) u.set(key, d.get<std::string>(key));
+    return u.get<std::string>(key) == d.get<std::string>(key);
+  };
+  if (!sameChoice(defaults, user, "Linear Solver Type")) return;
+  const auto& solverType = defaults.get<std::string>("Linear Solver Type");
+  const auto& defaultSolver = defaults.sublist("Linear Solver Types").sublist(solverType);
+  auto& userSolver = user.sublist("Linear Solver Types").sublist(solverType);
+  if (sameChoice(defaultSolver, userSolver, "Solver Type")) {
+    const auto& krylov = defaultSolver.get<std::string>("Solver Type");
+    userSolver.sublist("Solver Types").sublist(krylov).setParametersNotAlreadySet(
+        defaultSolver.sublist("Solver Types").sublist(krylov));
+  }
+  if (!sameChoice(defaults, user, "Preconditioner Type")) return;
+  const auto& preconditioner = defaults.get<std::string>("Preconditioner Type");
+  user.sublist("Preconditioner Types").sublist(preconditioner).setParametersNotAlreadySet(
+      defaults.sublist("Preconditioner Types").sublist(preconditioner));
+}
+
 }  // namespace
 
 LinearSolver buildLinearSolver(const Teuchos::ParameterList& user, int dofsPerNode,
@@ -125,16 +151,7 @@ LinearSolver buildLinearSolver(const Teuchos::ParameterList& user, int dofsPerNo
   solver.parameters->setName("Linear Solver");
   const auto defaults = defaultLinearSolverParameters(dofsPerNode, numGlobalDofs, symmetric);
   keepUserSmoother(user, *defaults);
-  // Only fill MueLu/Belos defaults when the user kept those choices: a user
-  // who picks another solver gets exactly what they wrote.
-  if (!solver.parameters->isParameter("Linear Solver Type")) solver.parameters->setParametersNotAlreadySet(*defaults);
-  else if (!solver.parameters->isParameter("Preconditioner Type") &&
-           solver.parameters->get<std::string>("Linear Solver Type") == "Belos") {
-    const auto& type = defaults->get<std::string>("Preconditioner Type");
-    solver.parameters->set("Preconditioner Type", type);
-    solver.parameters->sublist("Preconditioner Types").sublist(type).setParametersNotAlreadySet(
-        defaults->sublist("Preconditioner Types").sublist(type));
-  }
+  fillDefaultsOfSameChoices(*defaults, *solver.parameters);
   const std::string type = solver.parameters->get<std::string>("Linear Solver Type");
   solver.isDirect = type == "Amesos2" || type == "Amesos";
   solver.usesMueLu = solver.parameters->isParameter("Preconditioner Type") &&
