@@ -25,6 +25,14 @@ void ShippedDeck::fixLinearTolerance() {
                    "value=\"Fixed\"/></ParameterList>\n");
 }
 
+void ShippedDeck::setNewtonFlag(const std::string& name, bool value) {
+  ASSERT_EQ(text.find("name=\"Newton\""), std::string::npos) << "the deck has a Newton list already";
+  const auto end = text.rfind("</ParameterList>");
+  ASSERT_NE(end, std::string::npos);
+  text.insert(end, "<ParameterList name=\"Newton\"><Parameter name=\"" + name + "\" type=\"bool\" value=\"" +
+                       (value ? "true" : "false") + "\"/></ParameterList>\n");
+}
+
 void ShippedDeck::replace(const std::string& from, const std::string& to) {
   const auto at = text.find(from);
   EXPECT_NE(at, std::string::npos) << from;

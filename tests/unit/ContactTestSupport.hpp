@@ -26,6 +26,8 @@ struct ShippedDeck {
   /// measure the tangent, not the adaptive Krylov tolerance. The deck must not
   /// have a "Newton" list already.
   void fixLinearTolerance();
+  /// Adds 'Newton/<name>' = `value` (bool). The deck must not have a "Newton" list already.
+  void setNewtonFlag(const std::string& name, bool value);
 };
 
 struct ContactRun {

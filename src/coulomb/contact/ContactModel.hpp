@@ -79,6 +79,11 @@ public:
   /// contact leaves them as zeros, as the pattern only grows in place): more
   /// than twice the interface triplets of the last iterate beyond K's. Local.
   bool tangentStorageStale() const { return tangentSum_.grownBeyond(2.0); }
+  /// The storage turned back into the K of the last condensedTangent() call
+  /// (linalg::MatrixSum::restoreBase): for a constant K (linear elasticity)
+  /// the model evaluator uses it instead of assembling K again. False when
+  /// there is no storage yet. Local.
+  bool restoreBulkTangent() const { return tangentSum_.restoreBase(); }
 
   /// `Contact/System Form` = Saddle Point: the multipliers are Newton
   /// unknowns (MultiplierBlock in ContactPair.hpp) instead of being condensed.

@@ -305,6 +305,11 @@ bool extendsOwnedColumns(const CrsGraph& graph, const CrsMatrix& matrix) {
 
 }  // namespace
 
+bool Assembler::tangentIsConstant() const {
+  return std::all_of(impl_->blockMaterial.begin(), impl_->blockMaterial.end(),
+                     [](const MaterialParameters& m) { return m.model == MaterialModel::LinearElastic; });
+}
+
 bool Assembler::acceptsTangent(const CrsMatrix& matrix) const {
   const auto& graph = *impl_->ownedGraph;
   if (!extendsOwnedColumns(graph, matrix)) return false;

@@ -42,6 +42,9 @@ public:
   /// checks only the rows and columns: a caller passing another matrix than
   /// createMatrix()'s asks this first. Local.
   bool acceptsTangent(const CrsMatrix& matrix) const;
+  /// The tangent does not depend on u or t: every block is linear elastic
+  /// (small strain), the prescribed DoFs are fixed. Local (the same on every rank).
+  bool tangentIsConstant() const;
   const DirichletConstraints& constraints() const { return *constraints_; }
 
   /// residual = f_int(u) − f_ext(t) with prescribed rows u − ū(t); jacobian

@@ -213,6 +213,18 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
   const auto kRows = localK.graph.row_map;
   const auto kEntries = localK.graph.entries;
   const auto kValues = localK.values;
+  // K's rows that get triplets, kept for restoreBase() before anything is
+  // written (in place, K is the buffers about to be overwritten). K's local
+  // columns are the result's too: its column map starts with K's.
+  baseRows_.clear();
+  baseStart_.assign(1, 0);
+  baseRowEntries_.clear();
+  for (std::size_t r = 0; r < numRows; ++r) {
+    if (start[r] == start[r + 1]) continue;
+    baseRows_.push_back(static_cast<LocalOrdinal>(r));
+    for (auto k = kRows(r); k < kRows(r + 1); ++k) baseRowEntries_.push_back({kEntries(k), kValues(k)});
+    baseStart_.push_back(baseRowEntries_.size());
+  }
   // Row r of K + S: K's entries with the triplets of the row added (a binary
   // search finds an existing column; new ones, duplicates summed, are merged
   // in), sorted by local column as K's rows are.
@@ -375,6 +387,23 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
   lastImporter_ = importer;
   lastDomainMap_ = K.getDomainMap().get();
   return last_;
+}
+
+bool MatrixSum::restoreBase() {
+  if (last_.is_null()) return false;
+  const auto local = last_->getLocalMatrixDevice();
+  for (std::size_t i = 0; i < baseRows_.size(); ++i) {
+    const auto first = local.graph.row_map(baseRows_[i]), end = local.graph.row_map(baseRows_[i] + 1);
+    std::fill(local.values.data() + first, local.values.data() + end, 0.0);
+    const LocalOrdinal* columns = local.graph.entries.data();
+    for (std::size_t k = baseStart_[i]; k < baseStart_[i + 1]; ++k) {
+      const auto [column, value] = baseRowEntries_[k];
+      const LocalOrdinal* at = std::lower_bound(columns + first, columns + end, column);
+      COULOMB_REQUIRE(at != columns + end && *at == column, "internal: the last tangent lacks an entry of K");
+      local.values(static_cast<std::size_t>(at - columns)) = value;
+    }
+  }
+  return true;
 }
 
 bool MatrixSum::grownBeyond(double factor) const {

@@ -63,6 +63,10 @@ Teuchos::RCP<const ParameterList> validDeckParameters() {
                io::oneOf({"Adaptive", "Fixed"}));
     newton.set("Maximum Linear Tolerance", defaults.linearTolerance.maximum,
                "loosest relative Krylov tolerance of the Adaptive choice", range<double>(1e-10, 0.5));
+    newton.set("Reuse Constant Tangent", true,
+               "linear elastic model with contact (condensed): the bulk stiffness K, which does not change, is taken "
+               "back from the last Jacobian instead of being assembled again (the same values bit for bit); false "
+               "assembles it at every Newton iteration");
 
     ParameterList& output = valid->sublist("Output", false, "Results");
     output.set("File", "", "Exodus II result file, relative to the deck's folder (default: deck name with .e)");
@@ -106,6 +110,7 @@ RunSettings parseRunSettings(const ParameterList& deck, const std::string& deckP
   run.newton.relativeTolerance = io::valueOrDefault<double>(sub("Newton"), newton, "Relative Tolerance");
   run.newton.absoluteTolerance = io::valueOrDefault<double>(sub("Newton"), newton, "Absolute Tolerance");
   run.newton.linearTolerance.maximum = io::valueOrDefault<double>(sub("Newton"), newton, "Maximum Linear Tolerance");
+  run.reuseConstantTangent = io::valueOrDefault<bool>(sub("Newton"), newton, "Reuse Constant Tangent");
   const bool userFixesLinearTolerance = NewtonSolver::noxSetsLinearTolerance(sub("Nonlinear Solver"));
   const auto linearTolerance = io::valueOrDefault<std::string>(sub("Newton"), newton, "Linear Tolerance");
   if (userFixesLinearTolerance && sub("Newton").isParameter("Linear Tolerance") && linearTolerance == "Adaptive")

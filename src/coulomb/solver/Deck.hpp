@@ -20,6 +20,7 @@ struct RunSettings {
   double finalTime = 1.0;
   int maximumCutbacks = 5;
   bool extrapolate = true;   ///< predictor: last increment scaled to the step (else the last state)
+  bool reuseConstantTangent = true;  ///< ModelEvaluator::reuseConstantTangent
   NewtonSettings newton;
   std::string outputFile;    ///< resolved relative to the deck's folder
   bool printTimers = false;

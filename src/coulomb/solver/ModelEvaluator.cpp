@@ -136,13 +136,18 @@ void ModelEvaluator::evalContact(const Vector& x, Vector* f, const Teuchos::RCP<
     // Condensed form: K is assembled into the last condensed tangent (its
     // pattern holds K's), which condensedTangent() completes in place.
     auto storage = saddlePoint_ ? Teuchos::null : contact_->tangentStorage();
+    // A constant K is taken back from the storage (its rows were K's before
+    // the interface rows were added): no element loop at all. Every rank
+    // decides alike: the storage's rows are the same on every rank's part.
+    const bool restore = reuseConstantTangent_ && assembler_.tangentIsConstant() && !storage.is_null() &&
+                         !anyRank(*map_->getComm(), contact_->tangentStorageStale());
     const bool inPlace =
-        !storage.is_null() &&
-        !anyRank(*map_->getComm(), !assembler_.acceptsTangent(*storage) || contact_->tangentStorageStale());
+        restore || (!storage.is_null() &&
+                    !anyRank(*map_->getComm(), !assembler_.acceptsTangent(*storage) || contact_->tangentStorageStale()));
     if (inPlace) bulkTangent_ = storage;
     else if (bulkTangent_.is_null()) bulkTangent_ = assembler_.createMatrix();
     storage = Teuchos::null;
-    assembler_.assemble(time_, u, nullptr, bulkTangent_.get());
+    if (!restore || !contact_->restoreBulkTangent()) assembler_.assemble(time_, u, nullptr, bulkTangent_.get());
     auto tangent = saddlePoint_ ? contact_->saddlePointTangent(*bulkTangent_) : contact_->condensedTangent(bulkTangent_);
     // The bulk tangent is consumed: hold no second K-sized matrix through the
     // linear solve (the next Jacobian allocates it again, ~1 % of its time).

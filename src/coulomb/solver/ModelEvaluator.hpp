@@ -40,6 +40,10 @@ public:
   /// The next evaluation recomputes the contact state even at the same x.
   void forgetIterate() const { lastX_ = Teuchos::null; }
   double time() const { return time_; }
+  /// Contact, condensed form, constant K (fem::Assembler::tangentIsConstant):
+  /// K is recovered from the last tangent instead of assembled (the same
+  /// values bit for bit; 'Newton/Reuse Constant Tangent', default true).
+  void reuseConstantTangent(bool reuse) { reuseConstantTangent_ = reuse; }
 
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_x_space() const override { return space_; }
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_f_space() const override { return space_; }
@@ -62,6 +66,7 @@ private:
   double time_ = 0.0;
   contact::ContactModel* contact_ = nullptr;
   // Contact: the iterate whose state is current, its bulk residual, the bulk tangent.
+  bool reuseConstantTangent_ = true;
   bool saddlePoint_ = false;  ///< contact in the saddle-point form: x = (u, z) on ContactModel::saddlePointMap()
   mutable Teuchos::RCP<Vector> lastX_, bulkResidual_, displacement_;
   mutable Teuchos::RCP<CrsMatrix> bulkTangent_;

@@ -97,6 +97,7 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
   solvers_->model = Teuchos::rcp(new ModelEvaluator(*assembler_, dofs_->ownedMap(), solvers_->linear.factory,
                                                     [s] { setMueLuUserData(s->linear, s->nullspace, s->coordinates); },
                                                     contact_.get()));
+  solvers_->model->reuseConstantTangent(settings_.reuseConstantTangent);
   solvers_->newton = std::make_unique<NewtonSolver>(solvers_->model, settings_.nonlinearSolver, settings_.newton, console_,
                                                     contact_.get());
   displacement_ = Teuchos::rcp(new Vector(dofs_->ownedMap()));
