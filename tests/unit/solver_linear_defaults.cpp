@@ -36,6 +36,8 @@ TEST(LinearSolverDefaults, NonsymmetricDefaultsSmoothForwardThenBackward) {
   EXPECT_EQ(mueLu(s).get<std::string>("smoother: pre type"), "RELAXATION");
   EXPECT_EQ(mueLu(s).sublist("smoother: pre params").get<std::string>("relaxation: type"), "Gauss-Seidel");
   EXPECT_TRUE(mueLu(s).sublist("smoother: post params").get<bool>("relaxation: backward mode"));
+  EXPECT_TRUE(mueLu(s).sublist("smoother: pre params").get<bool>("relaxation: use l1"));
+  EXPECT_TRUE(mueLu(s).sublist("smoother: post params").get<bool>("relaxation: use l1"));
   EXPECT_FALSE(mueLu(s).isParameter("smoother: type"));
 }
 
