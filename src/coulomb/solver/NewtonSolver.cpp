@@ -9,7 +9,6 @@
 #include <NOX_Solver_Factory.H>
 #include <NOX_Solver_Generic.H>
 #include <NOX_StatusTest_Combo.H>
-#include <Thyra_BelosLinearOpWithSolve.hpp>
 #include <NOX_StatusTest_FiniteValue.H>
 #include <NOX_StatusTest_MaxIters.H>
 #include <NOX_StatusTest_NormF.H>
@@ -52,21 +51,10 @@ public:
       p.set("Tolerance", linearTolerance(forcing_->settings, normF, forcing_->previousNormF, forcing_->target));
       forcing_->previousNormF = normF;
     }
-    releasePreconditioner();
     return NOX::Thyra::Group::computeNewton(p);
   }
 
 private:
-  /// Before the solver of a new Jacobian is set up, the last one (Belos
-  /// problem and preconditioner) is dropped: Stratimikos would otherwise keep
-  /// it for reuse and build the new MueLu hierarchy beside the old one — the
-  /// peak of a contact run (two hierarchies and the Krylov basis).
-  void releasePreconditioner() {
-    if (is_valid_lows_ || shared_jacobian_.is_null()) return;
-    auto lows = shared_jacobian_->getObject(this);
-    if (auto* belos = dynamic_cast<::Thyra::BelosLinearOpWithSolve<double>*>(lows.get())) belos->uninitialize();
-  }
-
   std::shared_ptr<Forcing> forcing_;
 };
 
