@@ -72,10 +72,11 @@ Teuchos::RCP<Teuchos::ParameterList> defaultLinearSolverParameters(int dofsPerNo
     // 47.5 s).
     //
     // l1 Gauss-Seidel: on more than one rank each rank sweeps its own rows
-    // (processor-block Gauss-Seidel) and adds the magnitudes of its rows'
-    // entries in other ranks' columns to the diagonal. The same smoother on
-    // one rank (no such entries); at np = 2 hertz3d_r2 takes 405 instead of
-    // 423 GMRES iterations (385 at np = 1).
+    // (processor-block Gauss-Seidel); Ifpack2 adds half the magnitudes of a
+    // row's entries in other ranks' columns to its diagonal where the
+    // diagonal is not dominant over them. The same smoother on one rank (no
+    // such entries); at np = 2 hertz3d_r2 takes 405 instead of 423 GMRES
+    // iterations (385 at np = 1).
     muelu.set("smoother: pre type", "RELAXATION");
     auto& pre = muelu.sublist("smoother: pre params");
     pre.set("relaxation: type", "Gauss-Seidel");
