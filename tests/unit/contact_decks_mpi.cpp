@@ -228,6 +228,8 @@ TEST(ContactTangent, ReusedConstantStiffnessGivesTheAssembledIterates) {
     assembled.setNewtonFlag("Reuse Constant Tangent", false);
     const auto reference = runDeckText(name + "_assembled_tangent", assembled.text);
     const auto reused = runDeck(name);
+    EXPECT_GT(reused.simulation->contact()->bulkTangentRestores(), 0);  // the path under test was taken
+    EXPECT_EQ(reference.simulation->contact()->bulkTangentRestores(), 0);
     ASSERT_EQ(reused.summary.steps, reference.summary.steps);
     EXPECT_EQ(reused.summary.linearIterations, reference.summary.linearIterations);
     for (int s = 0; s < reference.summary.steps; ++s)

@@ -280,12 +280,23 @@ TEST(TripletAssembly, MatrixSumCompletesTheLastResultInPlace) {
   auto same = sum.add(*J, s2);  // the same pattern: completed in the same matrix
   EXPECT_EQ(same.get(), J.get());
   expectSum(same, 2.0, s2);
+  // restoreBase: the result turned back into the K given (2 K), then completed again.
+  ASSERT_TRUE(sum.restoreBase());
+  expectSum(same, 2.0, {});
+  EXPECT_EQ(sum.add(*same, s2).get(), same.get());
+  expectSum(same, 2.0, s2);
   refill(*same, -1.0);
   const auto entriesBefore = same->getGlobalNumEntries();
   auto grown = sum.add(*same, s3);  // s1's entries stay (zero), s3's are merged in
   EXPECT_EQ(sum.last().get(), grown.get());
   EXPECT_EQ(sum.inPlaceMerges(), 1);
   expectSum(grown, -1.0, s3);
+  {  // after an in-place merge; s1's rows (triplets two calls ago) are K's already
+    ASSERT_TRUE(sum.restoreBase());
+    expectSum(grown, -1.0, {});
+    EXPECT_EQ(sum.add(*grown, s3).get(), grown.get());
+    expectSum(grown, -1.0, s3);
+  }
   // s1's couplings stay as zeros: ~n / p entries beyond K's for 2 triplets.
   EXPECT_TRUE(sum.grownBeyond(2.0));
   EXPECT_EQ(grown->getGlobalNumEntries(), entriesBefore + 2 * static_cast<Tpetra::global_size_t>(comm->getSize()));
@@ -296,6 +307,11 @@ TEST(TripletAssembly, MatrixSumCompletesTheLastResultInPlace) {
     for (GlobalOrdinal c = 0; c < n; c += 2) dense.push_back({g, c, 0.1 * static_cast<double>(g + c)});
   }
   auto fresh = sum.add(*grown, dense);
+  expectSum(fresh, 4.0, dense);
+  ASSERT_TRUE(sum.restoreBase());  // new buffers and columns: K's local columns still lead
+  expectSum(fresh, 4.0, {});
+  EXPECT_EQ(sum.restores(), 3);
+  fresh = sum.add(*fresh, dense);
   expectSum(fresh, 4.0, dense);
   refill(*fresh, 1.0);
   expectSum(sum.add(*fresh, {}), 1.0, {});  // no triplets: the refilled K itself

@@ -82,5 +82,24 @@ TEST(LinearSolverDefaults, OtherChoicesGetExactlyWhatTheDeckWrote) {
             "RELAXATION");
 }
 
+// Below 5000 DoFs the default is Ifpack2 RELAXATION: a deck that names
+// Ifpack2 with another method (ILUT) must not get its relaxation keys.
+TEST(LinearSolverDefaults, AnotherIfpack2MethodGetsNoRelaxationKeys) {
+  Teuchos::ParameterList user("Linear Solver");
+  user.set("Preconditioner Type", "Ifpack2");
+  user.sublist("Preconditioner Types").sublist("Ifpack2").set("Prec Type", "ILUT");
+  const LinearSolver ilut = buildLinearSolver(user, 3, 1000, /*symmetric=*/true);
+  const auto& settings = ilut.parameters->sublist("Preconditioner Types").sublist("Ifpack2").sublist("Ifpack2 Settings");
+  // (Ifpack2 fills in its own "Jacobi"; the default's would be "Symmetric Gauss-Seidel".)
+  EXPECT_NE(settings.get<std::string>("relaxation: type"), "Symmetric Gauss-Seidel");
+
+  Teuchos::ParameterList relaxation("Linear Solver");
+  relaxation.set("Preconditioner Type", "Ifpack2");
+  const LinearSolver same = buildLinearSolver(relaxation, 3, 1000, /*symmetric=*/true);
+  EXPECT_EQ(same.parameters->sublist("Preconditioner Types").sublist("Ifpack2").sublist("Ifpack2 Settings").get<std::string>(
+                "relaxation: type"),
+            "Symmetric Gauss-Seidel");
+}
+
 }  // namespace
 }  // namespace coulomb::solver

@@ -82,8 +82,11 @@ public:
   /// The storage turned back into the K of the last condensedTangent() call
   /// (linalg::MatrixSum::restoreBase): for a constant K (linear elasticity)
   /// the model evaluator uses it instead of assembling K again. False when
-  /// there is no storage yet. Local.
+  /// there is no storage yet or the storage lacks an entry of K (then partly
+  /// rewritten: K must be assembled into it or apart). Local.
   bool restoreBulkTangent() const { return tangentSum_.restoreBase(); }
+  /// Successful restoreBulkTangent() calls (tests).
+  int bulkTangentRestores() const { return tangentSum_.restores(); }
 
   /// `Contact/System Form` = Saddle Point: the multipliers are Newton
   /// unknowns (MultiplierBlock in ContactPair.hpp) instead of being condensed.

@@ -71,9 +71,12 @@ public:
   /// pattern (the entries K lacks set to zero): the rows that got triplets
   /// take the K values kept from that call, the others are K's already.
   /// For a K that does not change (linear elasticity), this replaces its
-  /// assembly; the values are bitwise those of the K given. False (nothing
-  /// done) before the first call. Local.
+  /// assembly; the values are bitwise those of the K given. False before the
+  /// first call (nothing done) or if the result lacks an entry of K (values
+  /// partly rewritten: the caller must fill the matrix anew). Local.
   bool restoreBase();
+  /// Successful restoreBase() calls (for tests and diagnostics).
+  int restores() const { return restores_; }
   /// This rank's last result has more than `factor` x (triplets of the last
   /// call) entries beyond those of the last K that was not the result itself.
   /// In place the pattern only grows (a sliding contact leaves its old
@@ -94,13 +97,14 @@ private:
   const Map* lastDomainMap_ = nullptr;       ///< K's domain map then (the importer's source)
   int reuses_ = 0;
   int inPlaceMerges_ = 0;
+  int restores_ = 0;
   /// K's entries (local column, value) of the rows the last call added
   /// triplets to, row baseRows_[i] at [baseStart_[i], baseStart_[i + 1]).
   std::vector<LocalOrdinal> baseRows_;
   std::vector<std::size_t> baseStart_;
   std::vector<std::pair<LocalOrdinal, double>> baseRowEntries_;
   std::size_t baseEntries_ = 0;   ///< entries of the last K that was not the result itself
-  std::size_t lastTriplets_ = 0;  ///< triplets this rank received in the last call
+  std::size_t lastTriplets_ = 0;  ///< triplets of rows this rank owns in the last call (its own and received)
 };
 
 /// @brief Collective: adds every rank's `entries` into `owned` (on its map).

@@ -130,8 +130,10 @@ void keepUserSmoother(const Teuchos::ParameterList& user, Teuchos::ParameterList
 /// is the default's: a deck that names "Belos" and "MueLu" (the defaults)
 /// gets the same tuned MueLu and GMRES keys as one that names nothing
 /// (hertz3d_r2: 16.4 s against 27.9 s and 446 MB with MueLu's own defaults).
-/// A deck that picks another solver, Krylov method or preconditioner gets
-/// exactly what it wrote for that choice.
+/// A deck that picks another solver, Krylov method or preconditioner (or
+/// Ifpack2 method) gets exactly what it wrote for that choice; a deck that
+/// names only "Belos" gets the default Krylov method (CG, or GMRES for a
+/// nonsymmetric contact tangent), not Stratimikos' own.
 void fillDefaultsOfSameChoices(const Teuchos::ParameterList& defaults, Teuchos::ParameterList& user) {
   auto sameChoice = [](const Teuchos::ParameterList& d, Teuchos::ParameterList& u, const std::string& key) {
     if (!u.isParameter(key)) u.set(key, d.get<std::string>(key));
@@ -148,8 +150,11 @@ void fillDefaultsOfSameChoices(const Teuchos::ParameterList& defaults, Teuchos::
   }
   if (!sameChoice(defaults, user, "Preconditioner Type")) return;
   const auto& preconditioner = defaults.get<std::string>("Preconditioner Type");
-  user.sublist("Preconditioner Types").sublist(preconditioner).setParametersNotAlreadySet(
-      defaults.sublist("Preconditioner Types").sublist(preconditioner));
+  const auto& defaultPrec = defaults.sublist("Preconditioner Types").sublist(preconditioner);
+  auto& userPrec = user.sublist("Preconditioner Types").sublist(preconditioner);
+  // Ifpack2 names its method inside ("Prec Type"): ILUT gets no relaxation keys.
+  if (defaultPrec.isParameter("Prec Type") && !sameChoice(defaultPrec, userPrec, "Prec Type")) return;
+  userPrec.setParametersNotAlreadySet(defaultPrec);
 }
 
 }  // namespace
@@ -161,7 +166,11 @@ LinearSolver buildLinearSolver(const Teuchos::ParameterList& user, int dofsPerNo
   solver.parameters->setName("Linear Solver");
   const auto defaults = defaultLinearSolverParameters(dofsPerNode, numGlobalDofs, symmetric);
   keepUserSmoother(user, *defaults);
-  fillDefaultsOfSameChoices(*defaults, *solver.parameters);
+  try {
+    fillDefaultsOfSameChoices(*defaults, *solver.parameters);
+  } catch (const Teuchos::Exceptions::InvalidParameter& e) {  // e.g. a 'Solver Type' that is not a string
+    throw Error("deck: 'Linear Solver': " + std::string(e.what()).substr(0, 300));
+  }
   const std::string type = solver.parameters->get<std::string>("Linear Solver Type");
   solver.isDirect = type == "Amesos2" || type == "Amesos";
   solver.usesMueLu = solver.parameters->isParameter("Preconditioner Type") &&

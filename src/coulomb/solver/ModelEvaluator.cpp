@@ -141,13 +141,14 @@ void ModelEvaluator::evalContact(const Vector& x, Vector* f, const Teuchos::RCP<
     // decides alike: the storage's rows are the same on every rank's part.
     const bool restore = reuseConstantTangent_ && assembler_.tangentIsConstant() && !storage.is_null() &&
                          !anyRank(*map_->getComm(), contact_->tangentStorageStale());
+    const bool restored = restore && !anyRank(*map_->getComm(), !contact_->restoreBulkTangent());
     const bool inPlace =
-        restore || (!storage.is_null() &&
-                    !anyRank(*map_->getComm(), !assembler_.acceptsTangent(*storage) || contact_->tangentStorageStale()));
+        restored || (!storage.is_null() &&
+                     !anyRank(*map_->getComm(), !assembler_.acceptsTangent(*storage) || contact_->tangentStorageStale()));
     if (inPlace) bulkTangent_ = storage;
     else if (bulkTangent_.is_null()) bulkTangent_ = assembler_.createMatrix();
     storage = Teuchos::null;
-    if (!restore || !contact_->restoreBulkTangent()) assembler_.assemble(time_, u, nullptr, bulkTangent_.get());
+    if (!restored) assembler_.assemble(time_, u, nullptr, bulkTangent_.get());
     auto tangent = saddlePoint_ ? contact_->saddlePointTangent(*bulkTangent_) : contact_->condensedTangent(bulkTangent_);
     // The bulk tangent is consumed: hold no second K-sized matrix through the
     // linear solve (the next Jacobian allocates it again, ~1 % of its time).
