@@ -45,7 +45,11 @@ std::vector<double> toOwners(const std::vector<double>& records, int width, cons
   const auto& comm = *map.getComm();
   const int size = comm.getSize();
   const std::size_t n = records.size() / width;
-  if (size == 1) return {};  // one rank owns every row (rows come from the DoF map)
+  if (size == 1) {  // one rank owns every row of the DoF map: a record here is outside it
+    COULOMB_REQUIRE(records.empty(), "internal: contribution to row " << static_cast<GlobalOrdinal>(records[0])
+                                                                      << " outside the DoF map");
+    return {};
+  }
   // The owner of each distinct row, looked up once (Tpetra's directory is
   // given a sorted list without duplicates). One extra, valid index on every
   // rank: Map::getRemoteIndexList returns at once for an empty list, skipping
@@ -96,11 +100,6 @@ RoutedTriplets routeToOwners(const std::vector<MatrixTriplet>& triplets, const M
       away.insert(away.end(), {static_cast<double>(triplets[i].row), static_cast<double>(triplets[i].column),
                                triplets[i].value});
   }
-  if (map.getComm()->getSize() == 1) {
-    COULOMB_REQUIRE(away.empty(), "internal: contribution to row " << static_cast<GlobalOrdinal>(away[0])
-                                                                   << " outside the DoF map");
-    return routed;
-  }
   const auto records = toOwners(away, 3, map);
   for (std::size_t i = 0; i < records.size(); i += 3) {
     const auto row = static_cast<GlobalOrdinal>(records[i]);
@@ -150,13 +149,7 @@ void addEntries(const std::vector<VectorEntry>& entries, Vector& owned) {
     if (i != RowLookup::invalid()) here.push_back({i, e.value});
     else away.insert(away.end(), {static_cast<double>(e.row), e.value});
   }
-  // Rows are checked (collectively) before anything is added.
-  std::vector<double> mine;
-  if (map.getComm()->getSize() == 1)
-    COULOMB_REQUIRE(away.empty(), "internal: contribution to row " << static_cast<GlobalOrdinal>(away[0])
-                                                                   << " outside the DoF map");
-  else
-    mine = toOwners(away, 2, map);
+  const auto mine = toOwners(away, 2, map);  // checks the rows (collectively) before anything is added
   auto data = owned.getDataNonConst(0);
   for (const auto& [i, value] : here) data[i] += value;
   for (std::size_t i = 0; i < mine.size(); i += 2) data[local(static_cast<GlobalOrdinal>(mine[i]))] += mine[i + 1];
@@ -170,7 +163,7 @@ Teuchos::RCP<CrsMatrix> addTriplets(const CrsMatrix& K, const std::vector<Matrix
 Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<MatrixTriplet>& triplets) {
   const auto rowMap = K.getRowMap();
   const auto routed = routeToOwners(triplets, *rowMap);
-  if (last_.get() != &K) baseEntries_ = K.getNodeNumEntries();
+  if (last_.get() != &K) baseEntryCount_ = K.getNodeNumEntries();
 
   // Column map: K's, then the columns only the triplets have (in order of appearance).
   const auto kColumns = K.getColMap();
@@ -412,7 +405,7 @@ bool MatrixSum::restoreBase() {
 
 bool MatrixSum::grownBeyond(double factor) const {
   return !last_.is_null() &&
-         static_cast<double>(last_->getNodeNumEntries()) > static_cast<double>(baseEntries_) + factor * static_cast<double>(lastTriplets_);
+         static_cast<double>(last_->getNodeNumEntries()) > static_cast<double>(baseEntryCount_) + factor * static_cast<double>(lastTriplets_);
 }
 
 }  // namespace coulomb::linalg

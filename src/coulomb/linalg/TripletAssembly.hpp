@@ -103,7 +103,7 @@ private:
   std::vector<LocalOrdinal> baseRows_;
   std::vector<std::size_t> baseStart_;
   std::vector<std::pair<LocalOrdinal, double>> baseRowEntries_;
-  std::size_t baseEntries_ = 0;   ///< entries of the last K that was not the result itself
+  std::size_t baseEntryCount_ = 0;  ///< entries of the last K that was not the result itself
   std::size_t lastTriplets_ = 0;  ///< triplets of rows this rank owns in the last call (its own and received)
 };
 

@@ -137,14 +137,13 @@ void ModelEvaluator::evalContact(const Vector& x, Vector* f, const Teuchos::RCP<
     // pattern holds K's), which condensedTangent() completes in place.
     auto storage = saddlePoint_ ? Teuchos::null : contact_->tangentStorage();
     // A constant K is taken back from the storage (its rows were K's before
-    // the interface rows were added): no element loop at all. Every rank
-    // decides alike: the storage's rows are the same on every rank's part.
-    const bool restore = reuseConstantTangent_ && assembler_.tangentIsConstant() && !storage.is_null() &&
-                         !anyRank(*map_->getComm(), contact_->tangentStorageStale());
-    const bool restored = restore && !anyRank(*map_->getComm(), !contact_->restoreBulkTangent());
-    const bool inPlace =
-        restored || (!storage.is_null() &&
-                     !anyRank(*map_->getComm(), !assembler_.acceptsTangent(*storage) || contact_->tangentStorageStale()));
+    // the interface rows were added): no element loop at all. Every choice
+    // is agreed on by all ranks (anyRank). A stale storage (too many dead couplings) gets K assembled apart.
+    const auto& comm = *map_->getComm();
+    const bool usable = !storage.is_null() && !anyRank(comm, contact_->tangentStorageStale());
+    const bool restored = usable && reuseConstantTangent_ && assembler_.tangentIsConstant() &&
+                          !anyRank(comm, !contact_->restoreBulkTangent());
+    const bool inPlace = restored || (usable && !anyRank(comm, !assembler_.acceptsTangent(*storage)));
     if (inPlace) bulkTangent_ = storage;
     else if (bulkTangent_.is_null()) bulkTangent_ = assembler_.createMatrix();
     storage = Teuchos::null;
