@@ -135,6 +135,7 @@ def result_keys(case, keys, console, timers, stdout, run):
         "disturbed": (run["other"] > max(0.3, 0.1 * wall)) if run["other"] is not None else None,
         "load_avg_1m_before": round(run["load_before"], 2),
         "linear_iterations_per_solve": linear_per_solve,
+        "preconditioner_kept": console.get("preconditioner_kept"),
         "active_per_iteration": console.get("iteration_active"),
     })
     out.update(timer_keys(timers, console))
@@ -148,6 +149,10 @@ def timer_keys(timers, console):
     solve, solves, _ = per_call(timers, "Stratimikos: BelosLOWS")
     prec, precs, prec_total = per_call(timers, "NOX Total Preconditioner Construction")
     muelu, muelu_calls, _ = per_call(timers, "ThyraMueLu::initializePrec")
+    # a solve that keeps the last preconditioner (Newton/Reuse Preconditioner)
+    # passes NOX's construction timer without a setup: per setup, not per call
+    setups = muelu_calls or precs
+    prec = prec_total / setups if setups else None
     assembly_total = timers.get("Coulomb: bulk assembly", (0.0, 0))[0]
     solve_total = timers.get("Stratimikos: BelosLOWS", (0.0, 0))[0]
     # contact: the two top-level timers of ContactModel ("update" contains
@@ -165,6 +170,7 @@ def timer_keys(timers, console):
         "linear_solve_s_per_solve": solve,
         "linear_solves": solves,
         "preconditioner_s_per_setup": prec,
+        "preconditioner_setups": setups,
         "muelu_setup_s": muelu,
         "contact_update_s_per_call": update,
         "contact_update_calls": update_calls,

@@ -237,6 +237,52 @@ TEST(ContactTangent, ReusedConstantStiffnessGivesTheAssembledIterates) {
   }
 }
 
+// A Newton iteration whose contact set did not change since the last solve
+// of the step keeps that solve's preconditioner (NewtonSettings::
+// reusePreconditioner). Only the Krylov solves see it: the same load to the
+// solver tolerance (the inexact Newton iterates differ within the Krylov
+// tolerance, so a step may take one iteration more or less: friction_punch
+// at np 3); it is kept only after an unchanged set (active nodes and, with
+// friction, stick/slip) and never in the first solve of a step.
+TEST(ContactTangent, PreconditionerIsKeptOnlyWhileTheSetIsUnchanged) {
+  for (const auto& [name, mesh] : {std::pair<std::string, std::string>{"hertz2d", "hertz2d.e"},
+                                   std::pair<std::string, std::string>{"friction_punch", "friction_punch.e"}}) {
+    SCOPED_TRACE(name);
+    ShippedDeck rebuilt(name, mesh);
+    rebuilt.setNewtonFlag("Reuse Preconditioner", false);
+    const auto reference = runDeckText(name + "_rebuilt_preconditioner", rebuilt.text);
+    const auto kept = runDeck(name);
+    ASSERT_EQ(kept.summary.steps, reference.summary.steps);
+    EXPECT_EQ(kept.summary.cutbacks, 0);
+    int keptSolves = 0, referenceKept = 0;
+    for (const auto& step : reference.summary.stepPreconditionerKept)
+      for (int k : step) referenceKept += k;
+    for (std::size_t s = 0; s < kept.summary.stepPreconditionerKept.size(); ++s) {
+      const auto& flags = kept.summary.stepPreconditionerKept[s];
+      const auto& changed = kept.summary.stepChangedNodes[s];
+      const auto& stickSlip = kept.summary.stepStickSlipChanged[s];
+      ASSERT_EQ(flags.size(), changed.size());
+      for (std::size_t k = 0; k < flags.size(); ++k) {
+        if (!flags[k]) continue;
+        ++keptSolves;
+        // Row k is the iterate the solve from iterate k - 1 reached: that
+        // solve was not the step's first, and the set at k - 1 was unchanged.
+        ASSERT_GE(k, 2u) << "step " << s + 1;
+        EXPECT_EQ(changed[k - 1], 0) << "step " << s + 1 << ", iteration " << k;
+        EXPECT_LE(stickSlip[k - 1], 0) << "step " << s + 1 << ", iteration " << k;
+      }
+    }
+    EXPECT_GT(keptSolves, 0);  // the path under test was taken
+    EXPECT_EQ(referenceKept, 0);
+    const auto load = reference.simulation->reactionTotal("top"), result = kept.simulation->reactionTotal("top");
+    ASSERT_EQ(result.size(), load.size());
+    double scale = 0;
+    for (double f : load) scale += f * f;
+    scale = std::sqrt(scale);
+    for (std::size_t c = 0; c < load.size(); ++c) EXPECT_NEAR(result[c], load[c], 1e-8 * scale) << "component " << c;
+  }
+}
+
 // A pair whose surfaces never meet is not an error: the run goes through and
 // reports no active node (the console adds a note).
 TEST(ContactPairs, SurfacesThatNeverMeetGiveNoActiveNode) {

@@ -67,6 +67,10 @@ Teuchos::RCP<const ParameterList> validDeckParameters() {
                "linear elastic model with contact (condensed): the bulk stiffness K, which does not change, is taken "
                "back from the last Jacobian instead of being assembled again (the same values bit for bit); false "
                "assembles it at every Newton iteration");
+    newton.set("Reuse Preconditioner", defaults.reusePreconditioner,
+               "with contact and an iterative linear solver: a Newton iteration whose contact set (active nodes, "
+               "stick/slip) did not change since the last solve of the load step keeps that solve's preconditioner "
+               "instead of building a new one; false builds one at every Newton iteration");
 
     ParameterList& output = valid->sublist("Output", false, "Results");
     output.set("File", "", "Exodus II result file, relative to the deck's folder (default: deck name with .e)");
@@ -111,6 +115,7 @@ RunSettings parseRunSettings(const ParameterList& deck, const std::string& deckP
   run.newton.absoluteTolerance = io::valueOrDefault<double>(sub("Newton"), newton, "Absolute Tolerance");
   run.newton.linearTolerance.maximum = io::valueOrDefault<double>(sub("Newton"), newton, "Maximum Linear Tolerance");
   run.reuseConstantTangent = io::valueOrDefault<bool>(sub("Newton"), newton, "Reuse Constant Tangent");
+  run.newton.reusePreconditioner = io::valueOrDefault<bool>(sub("Newton"), newton, "Reuse Preconditioner");
   const bool userFixesLinearTolerance = NewtonSolver::noxSetsLinearTolerance(sub("Nonlinear Solver"));
   const auto linearTolerance = io::valueOrDefault<std::string>(sub("Newton"), newton, "Linear Tolerance");
   if (userFixesLinearTolerance && sub("Newton").isParameter("Linear Tolerance") && linearTolerance == "Adaptive")

@@ -34,14 +34,21 @@ public:
     double target = 0;             ///< residual norm at which Newton stops
     double previousNormF = -1.0;   ///< <= 0: no Newton step taken yet
   };
+  /// Shared by the clones: when the last preconditioner is kept (NewtonSettings::reusePreconditioner).
+  struct PreconditionerReuse {
+    const contact::ContactModel* contact = nullptr;
+    int solves = 0;             ///< solves of this load step so far
+    bool lastReused = false;    ///< the last solve kept the preconditioner
+  };
   using NOX::Thyra::Group::Group;
   CountingGroup(const CountingGroup& source, NOX::CopyType type)
-      : NOX::Thyra::Group(source, type), forcing_(source.forcing_) {}
+      : NOX::Thyra::Group(source, type), forcing_(source.forcing_), reuse_(source.reuse_) {}
   Teuchos::RCP<NOX::Abstract::Group> clone(NOX::CopyType type) const override {
     return Teuchos::rcp(new CountingGroup(*this, type));
   }
   int lastLinearIterations() const { return last_linear_solve_num_iters_; }
   void setForcing(std::shared_ptr<Forcing> forcing) { forcing_ = std::move(forcing); }
+  void setPreconditionerReuse(std::shared_ptr<PreconditionerReuse> reuse) { reuse_ = std::move(reuse); }
 
   /// NOX passes the Newton direction's "Linear Solver" list; its "Tolerance"
   /// becomes the relative residual tolerance of the Belos solve.
@@ -51,11 +58,26 @@ public:
       p.set("Tolerance", linearTolerance(forcing_->settings, normF, forcing_->previousNormF, forcing_->target));
       forcing_->previousNormF = normF;
     }
+    if (reuse_) {
+      // The tangent changes little while the contact set stays the same
+      // (the bulk not at all when linear): the preconditioner of the last
+      // solve still serves, and its setup (MueLu: a quarter of a contact
+      // iteration) is saved. The first solve of a step always builds one
+      // (a cutback or a new step may have changed the set since).
+      const auto& set = reuse_->contact->lastSummary().activeSet;
+      const bool sameSet = set.changed == 0 && set.stickSlipChanged == 0;
+      // NOX builds the preconditioner (prec_, from the factory's
+      // preconditioner factory) before each solve unless told not to.
+      reuse_->lastReused = reuse_->solves > 0 && sameSet && !prec_.is_null();
+      updatePreconditioner_ = !reuse_->lastReused;
+      ++reuse_->solves;
+    }
     return NOX::Thyra::Group::computeNewton(p);
   }
 
 private:
   std::shared_ptr<Forcing> forcing_;
+  std::shared_ptr<PreconditionerReuse> reuse_;
 };
 
 /// Contact part of the convergence test: the active set did not change at
@@ -81,8 +103,9 @@ private:
 /// Records one table row per iteration and prints it on rank 0.
 class IterationTable : public NOX::Observer {
 public:
-  IterationTable(NewtonReport& report, std::ostream* console, const contact::ContactModel* contact)
-      : report_(report), console_(console), contact_(contact) {}
+  IterationTable(NewtonReport& report, std::ostream* console, const contact::ContactModel* contact,
+                 std::shared_ptr<const CountingGroup::PreconditionerReuse> reuse)
+      : report_(report), console_(console), contact_(contact), reuse_(std::move(reuse)) {}
 
   void runPreSolve(const NOX::Solver::Generic& solver) override {
     start_ = Clock::now();
@@ -111,6 +134,7 @@ public:
     difference->update(-1.0, solver.getPreviousSolutionGroup().getX(), 1.0);
     row.incrementNorm = difference->norm();
     if (const auto* counting = dynamic_cast<const CountingGroup*>(&group)) row.linearIterations = counting->lastLinearIterations();
+    row.preconditionerReused = reuse_ && reuse_->lastReused;
     row.seconds = std::chrono::duration<double>(now - start_).count();
     addContact(row);
     start_ = now;
@@ -156,6 +180,7 @@ private:
   NewtonReport& report_;
   std::ostream* console_;
   const contact::ContactModel* contact_;
+  std::shared_ptr<const CountingGroup::PreconditionerReuse> reuse_;
   Clock::time_point start_;
 };
 
@@ -164,6 +189,12 @@ private:
 int NewtonReport::linearIterations() const {
   int total = 0;
   for (const auto& row : iterations) total += row.linearIterations;
+  return total;
+}
+
+int NewtonReport::preconditionerReuses() const {
+  int total = 0;
+  for (const auto& row : iterations) total += row.preconditionerReused ? 1 : 0;
   return total;
 }
 
@@ -209,6 +240,12 @@ NewtonReport NewtonSolver::solve(Vector& u) {
     forcing->target = std::max(settings_.absoluteTolerance, settings_.relativeTolerance * group->getNormF());
     group->setForcing(forcing);
   }
+  std::shared_ptr<CountingGroup::PreconditionerReuse> reuse;
+  if (settings_.reusePreconditioner && contact_ && !directSolver_) {
+    reuse = std::make_shared<CountingGroup::PreconditionerReuse>();
+    reuse->contact = contact_;
+    group->setPreconditionerReuse(reuse);
+  }
 
   using namespace NOX::StatusTest;
   auto residualSmall = Teuchos::rcp(new Combo(Combo::OR));
@@ -225,7 +262,7 @@ NewtonReport NewtonSolver::solve(Vector& u) {
   NewtonReport report;
   auto parameters = Teuchos::rcp(new Teuchos::ParameterList(*noxParameters_));
   parameters->sublist("Solver Options").set<Teuchos::RCP<NOX::Observer>>(
-      "Observer", Teuchos::rcp(new IterationTable(report, console_, contact_)));
+      "Observer", Teuchos::rcp(new IterationTable(report, console_, contact_, reuse)));
   auto solver = NOX::Solver::buildSolver(group, tests, parameters);
   const auto status = solver->solve();
   report.converged = status == NOX::StatusTest::Converged;

@@ -24,6 +24,11 @@ struct NewtonSettings {
   double relativeTolerance = 1e-8;  ///< on ||f|| / ||f_0|| (f_0: residual at the step's start)
   double absoluteTolerance = 1e-10; ///< on ||f||
   LinearToleranceSettings linearTolerance;  ///< Krylov tolerance per iteration (LinearTolerance.hpp)
+  /// With contact and an iterative solver: a Newton iteration whose contact
+  /// set (active nodes, stick/slip) did not change since the last solve of
+  /// the step keeps that solve's preconditioner (Thyra::initializeAndReuseOp)
+  /// instead of building a new one ('Newton/Reuse Preconditioner').
+  bool reusePreconditioner = true;
 };
 
 /// @brief One row of the iteration table.
@@ -43,12 +48,14 @@ struct NewtonIteration {
   double normalResidual = 0;
   double normalRatio = 0;   ///< normalResidual / ||contact forces||
   bool contactConverged = false;
+  bool preconditionerReused = false;  ///< the solve of this row's step kept the last preconditioner
 };
 
 struct NewtonReport {
   bool converged = false;
   std::vector<NewtonIteration> iterations;  ///< row 0: the initial residual
   int linearIterations() const;
+  int preconditionerReuses() const;
 };
 
 class NewtonSolver {
@@ -57,6 +64,10 @@ public:
   NewtonSolver(Teuchos::RCP<ModelEvaluator> model, const Teuchos::ParameterList& noxParameters,
                const NewtonSettings& settings, std::ostream* console,
                const contact::ContactModel* contact = nullptr);
+
+  /// `directSolver`: the linear solver factors the matrix (Amesos2): a
+  /// preconditioner is never reused.
+  void setDirectSolver(bool direct) { directSolver_ = direct; }
 
   /// Solves f(u) = 0 starting from `u`; on return `u` holds the last iterate.
   NewtonReport solve(Vector& u);
@@ -74,6 +85,7 @@ private:
   NewtonSettings settings_;
   std::ostream* console_;
   const contact::ContactModel* contact_ = nullptr;
+  bool directSolver_ = false;
 };
 
 }  // namespace coulomb::solver

@@ -100,6 +100,7 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
   solvers_->model->reuseConstantTangent(settings_.reuseConstantTangent);
   solvers_->newton = std::make_unique<NewtonSolver>(solvers_->model, settings_.nonlinearSolver, settings_.newton, console_,
                                                     contact_.get());
+  solvers_->newton->setDirectSolver(solvers_->linear.isDirect);
   displacement_ = Teuchos::rcp(new Vector(dofs_->ownedMap()));
   reactions_ = Teuchos::rcp(new Vector(dofs_->ownedMap()));
   if (contact_ && contact_->saddlePoint()) saddlePointState_ = Teuchos::rcp(new Vector(contact_->saddlePointMap()));
@@ -246,19 +247,28 @@ RunSummary Simulation::run() {
     std::vector<double> norms;
     for (const auto& row : report.iterations) norms.push_back(row.residualNorm);
     summary.stepResidualNorms.push_back(norms);
-    std::vector<long long> active, changed;
+    std::vector<long long> active, changed, stickSlip;
+    std::vector<int> kept;
     for (const auto& row : report.iterations) {
       active.push_back(row.activeNodes);
       changed.push_back(row.changedNodes);
+      stickSlip.push_back(row.stickSlipChanged);
+      kept.push_back(row.preconditionerReused ? 1 : 0);
     }
     summary.stepActiveNodes.push_back(active);
     summary.stepChangedNodes.push_back(changed);
+    summary.stepStickSlipChanged.push_back(stickSlip);
+    summary.stepPreconditionerKept.push_back(kept);
     writeStep(time, {double(iterations), double(report.linearIterations()), double(summary.cutbacks)});
     if (console_)
       *console_ << "  step " << summary.steps << " converged: t = " << time << ", " << iterations << " Newton / "
                 << report.linearIterations() << " linear iterations, |f| = " << std::scientific << std::setprecision(2)
                 << report.iterations.back().residualNorm << std::defaultfloat << ", " << std::fixed
-                << std::setprecision(2) << seconds << " s" << std::defaultfloat << "\n";
+                << std::setprecision(2) << seconds << " s" << std::defaultfloat
+                << (report.preconditionerReuses() > 0
+                        ? ", preconditioner kept in " + std::to_string(report.preconditionerReuses()) + " solves"
+                        : std::string())
+                << "\n";
     if (contact_) reportContact(summary);
     // Recover the nominal step after a cutback, but only once two steps in a
     // row went through at the reduced size (else it fails again at once).

@@ -42,6 +42,9 @@ struct RunSummary {
   std::vector<std::vector<double>> stepResidualNorms;  ///< Newton residual sequence per converged step
   std::vector<std::vector<long long>> stepActiveNodes;   ///< contact: active nodes per Newton iteration
   std::vector<std::vector<long long>> stepChangedNodes;  ///< contact: nodes that changed state, per iteration
+  std::vector<std::vector<long long>> stepStickSlipChanged;  ///< frictional contact: stick <-> slip changes (else -1)
+  /// contact: 1 where the solve that led to the iterate kept the last preconditioner (row 0: 0)
+  std::vector<std::vector<int>> stepPreconditionerKept;
   std::vector<long long> pairMaximumActive;              ///< contact: most active nodes of each pair in a step
 };
 
