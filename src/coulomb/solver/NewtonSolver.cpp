@@ -15,9 +15,11 @@
 #include <NOX_Thyra.H>
 #include <NOX_Utils.H>
 #include <Thyra_TpetraThyraWrappers.hpp>
+#include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "coulomb/contact/ContactModel.hpp"
+#include "coulomb/core/Parallel.hpp"
 
 namespace coulomb::solver {
 
@@ -39,6 +41,17 @@ public:
     const contact::ContactModel* contact = nullptr;
     int solves = 0;             ///< solves of this load step so far
     bool lastReused = false;    ///< the last solve kept the preconditioner
+    /// The matrix the preconditioner was built from: the object, its graph
+    /// and column map, its entries (this rank).
+    struct Structure {
+      const void* matrix = nullptr;
+      const void* graph = nullptr;
+      const void* columns = nullptr;
+      std::size_t entries = 0;
+      bool operator==(const Structure& o) const {
+        return matrix == o.matrix && graph == o.graph && columns == o.columns && entries == o.entries;
+      }
+    } built;
   };
   using NOX::Thyra::Group::Group;
   CountingGroup(const CountingGroup& source, NOX::CopyType type)
@@ -64,11 +77,26 @@ public:
       // solve still serves, and its setup (MueLu: a quarter of a contact
       // iteration) is saved. The first solve of a step always builds one
       // (a cutback or a new step may have changed the set since).
+      // Only over the same matrix structure: the preconditioner keeps
+      // references into the matrix it was built from (Ifpack2's smoother
+      // caches what it derives from the graph), so a matrix completed in
+      // place with a new column map would be read through stale indices.
+      // The old matrix of a new one stays alive in the preconditioner, so
+      // equal addresses mean the same object.
       const auto& set = reuse_->contact->lastSummary().activeSet;
       const bool sameSet = set.changed == 0 && set.stickSlipChanged == 0;
+      const auto matrix = Teuchos::rcp_dynamic_cast<const CrsMatrix>(
+          Thyra::TpetraOperatorVectorExtraction<Scalar, LocalOrdinal, GlobalOrdinal>::getConstTpetraOperator(lop_));
+      PreconditionerReuse::Structure now;
+      if (!matrix.is_null())
+        now = {matrix.get(), matrix->getCrsGraph().get(), matrix->getColMap().get(), matrix->getNodeNumEntries()};
       // NOX builds the preconditioner (prec_, from the factory's
-      // preconditioner factory) before each solve unless told not to.
-      reuse_->lastReused = reuse_->solves > 0 && sameSet && !prec_.is_null();
+      // preconditioner factory) before each solve unless told not to. The
+      // set is the same on every rank; the structure is agreed on.
+      bool keep = reuse_->solves > 0 && sameSet && !prec_.is_null() && !matrix.is_null();
+      if (keep) keep = !anyRank(*matrix->getRowMap()->getComm(), !(now == reuse_->built));
+      reuse_->lastReused = keep;
+      if (!keep) reuse_->built = now;
       updatePreconditioner_ = !reuse_->lastReused;
       ++reuse_->solves;
     }
