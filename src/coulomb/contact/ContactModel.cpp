@@ -149,15 +149,26 @@ Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMat
   std::unordered_map<GlobalOrdinal, std::vector<std::pair<GlobalOrdinal, double>>> stiffnessRows;
   for (const auto& t : contributions_.contactStiffness) stiffnessRows[t.row].push_back({t.column, t.value});
   const auto& columns = *bulkTangent->getColMap();
-  // Row by row of T - I, the combination of K (+ K_c) rows is summed in a
-  // hash map first: the slave nodes coupled to one master row share most of
-  // their columns, so this emits each column once per row.
+  // Row by row of T - I, the combination of K (+ K_c) rows is summed first
+  // (the slave nodes coupled to one master row share most of their
+  // columns, so each column is emitted once per row): densely over K's local
+  // columns, with a list of the touched ones; K_c columns outside K's
+  // column map in a small hash map.
   std::map<GlobalOrdinal, std::vector<std::pair<GlobalOrdinal, double>>> transformRows;
   for (const auto* part : {&contributions_.transform, &contributions_.tangentTransform})
     for (const auto& t : *part) transformRows[t.row].push_back({t.column, t.value});
-  std::unordered_map<GlobalOrdinal, double> combination;
+  std::vector<double> dense(transformRows.empty() ? 0 : columns.getNodeNumElements(), 0.0);
+  std::vector<char> touched(dense.size(), 0);
+  std::vector<LocalOrdinal> touchedList;
+  std::unordered_map<GlobalOrdinal, double> outside;
+  auto accumulate = [&](LocalOrdinal c, double value) {
+    if (!touched[c]) {
+      touched[c] = 1;
+      touchedList.push_back(c);
+    }
+    dense[c] += value;
+  };
   for (const auto& [targetRow, terms] : transformRows) {
-    combination.clear();
     for (const auto& [column, coefficient] : terms) {
       const LocalOrdinal row = map_->getLocalElement(column);
       COULOMB_REQUIRE(row != Teuchos::OrdinalTraits<LocalOrdinal>::invalid(),
@@ -165,12 +176,23 @@ Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMat
       Teuchos::ArrayView<const LocalOrdinal> indices;
       Teuchos::ArrayView<const double> values;
       bulkTangent->getLocalRowView(row, indices, values);
-      for (int k = 0; k < indices.size(); ++k) combination[columns.getGlobalElement(indices[k])] += coefficient * values[k];
+      for (int k = 0; k < indices.size(); ++k) accumulate(indices[k], coefficient * values[k]);
       const auto contact = stiffnessRows.find(column);
-      if (contact != stiffnessRows.end())
-        for (const auto& [c, value] : contact->second) combination[c] += coefficient * value;
+      if (contact == stiffnessRows.end()) continue;
+      for (const auto& [c, value] : contact->second) {
+        const LocalOrdinal local = columns.getLocalElement(c);
+        if (local == Teuchos::OrdinalTraits<LocalOrdinal>::invalid()) outside[c] += coefficient * value;
+        else accumulate(local, coefficient * value);
+      }
     }
-    for (const auto& [column, value] : combination) interfaceRows.push_back({targetRow, column, value});
+    for (LocalOrdinal c : touchedList) {
+      interfaceRows.push_back({targetRow, columns.getGlobalElement(c), dense[c]});
+      dense[c] = 0.0;
+      touched[c] = 0;
+    }
+    touchedList.clear();
+    for (const auto& [column, value] : outside) interfaceRows.push_back({targetRow, column, value});
+    outside.clear();
   }
   static const auto addTimer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact K + interface rows");
   Teuchos::TimeMonitor addScope(*addTimer);
