@@ -9,6 +9,9 @@
 // RESULT.e replaces the deck's Output/File. Prints the Newton summary, the reaction total on NODE_SET (default "top")
 // and the largest displacement magnitude component (a Tpetra reduction over
 // the ranks that ran the simulation).
+#include <mpi.h>
+
+#include <exception>
 #include <iomanip>
 #include <iostream>
 #include <string>
@@ -55,6 +58,11 @@ int main(int argc, char** argv) {
       // Every rank of `comm` throws the same error; one reports it.
       if (comm->getRank() == 0) std::cerr << "embed_coulomb: error: " << e.what() << "\n";
       status = 1;
+    } catch (const std::exception& e) {
+      // Anything else (e.g. from inside Trilinos) may have been thrown on
+      // some ranks only: the others would wait in a collective, so abort.
+      std::cerr << "embed_coulomb: internal error on rank " << world->getRank() << ": " << e.what() << "\n";
+      MPI_Abort(MPI_COMM_WORLD, 3);
     }
   }
   // The application goes on with all its ranks.

@@ -8,7 +8,7 @@
 #
 # This file is also the test's script: cmake -D... -P embedding.cmake.
 if(CMAKE_SCRIPT_MODE_FILE)
-  # Script mode. Inputs: BINARY_DIR SOURCE_DIR WORKDIR MPIEXEC (a ;-list) LAUNCHER
+  # Script mode. Inputs: BINARY_DIR SOURCE_DIR WORKDIR LIBDIR MPIEXEC (a ;-list) LAUNCHER
   file(REMOVE_RECURSE "${WORKDIR}")
   file(MAKE_DIRECTORY "${WORKDIR}")
   function(run what)
@@ -19,7 +19,7 @@ if(CMAKE_SCRIPT_MODE_FILE)
     set(output "${out}" PARENT_SCOPE)
   endfunction()
   run("install" ${CMAKE_COMMAND} --install "${BINARY_DIR}" --prefix "${WORKDIR}/prefix")
-  foreach(installed lib/cmake/Coulomb/CoulombConfig.cmake lib/cmake/Coulomb/CoulombTargets.cmake
+  foreach(installed ${LIBDIR}/cmake/Coulomb/CoulombConfig.cmake ${LIBDIR}/cmake/Coulomb/CoulombTargets.cmake
                     include/coulomb/solver/Simulation.hpp bin/coulomb)
     if(NOT EXISTS "${WORKDIR}/prefix/${installed}")
       message(FATAL_ERROR "the install lacks ${installed}")
@@ -55,6 +55,6 @@ endif()
 find_program(COULOMB_CCACHE ccache)
 add_test(NAME Embedding.install_build_run
          COMMAND ${CMAKE_COMMAND} -DBINARY_DIR=${PROJECT_BINARY_DIR} -DSOURCE_DIR=${PROJECT_SOURCE_DIR}
-                 -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/embedding "-DMPIEXEC=${COULOMB_MPIEXEC}"
+                 -DWORKDIR=${CMAKE_CURRENT_BINARY_DIR}/embedding -DLIBDIR=${CMAKE_INSTALL_LIBDIR} "-DMPIEXEC=${COULOMB_MPIEXEC}"
                  -DLAUNCHER=${COULOMB_CCACHE} -P ${CMAKE_CURRENT_SOURCE_DIR}/embedding.cmake)
 set_tests_properties(Embedding.install_build_run PROPERTIES TIMEOUT 900 PROCESSORS 3 RUN_SERIAL TRUE)

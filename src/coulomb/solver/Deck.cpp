@@ -69,8 +69,9 @@ Teuchos::RCP<const ParameterList> validDeckParameters() {
                "assembles it at every Newton iteration");
     newton.set("Reuse Preconditioner", defaults.reusePreconditioner,
                "with contact and an iterative linear solver: a Newton iteration whose contact set (active nodes, "
-               "stick/slip) did not change since the last solve of the load step keeps that solve's preconditioner "
-               "instead of building a new one; false builds one at every Newton iteration");
+               "stick/slip) did not change since the last solve of the load step, whose matrix has the same "
+               "structure and whose last solve converged keeps the last built preconditioner instead of building a "
+               "new one (never in the first solve of a step); false builds one at every Newton iteration");
 
     ParameterList& output = valid->sublist("Output", false, "Results");
     output.set("File", "", "Exodus II result file, relative to the deck's folder (default: deck name with .e)");

@@ -42,14 +42,16 @@ public:
     int solves = 0;             ///< solves of this load step so far
     bool lastReused = false;    ///< the last solve kept the preconditioner
     /// The matrix the preconditioner was built from: the object, its graph
-    /// and column map, its entries (this rank).
+    /// and column map, its entries (this rank). Held, so that an address
+    /// compared later is never a new object at a freed one's place.
     struct Structure {
-      const void* matrix = nullptr;
-      const void* graph = nullptr;
-      const void* columns = nullptr;
+      Teuchos::RCP<const CrsMatrix> matrix;
+      Teuchos::RCP<const Tpetra::CrsGraph<LocalOrdinal, GlobalOrdinal>> graph;
+      Teuchos::RCP<const Map> columns;
       std::size_t entries = 0;
-      bool operator==(const Structure& o) const {
-        return matrix == o.matrix && graph == o.graph && columns == o.columns && entries == o.entries;
+      bool same(const Structure& o) const {
+        return matrix.get() == o.matrix.get() && graph.get() == o.graph.get() && columns.get() == o.columns.get() &&
+               entries == o.entries;
       }
     } built;
   };
@@ -72,32 +74,40 @@ public:
       forcing_->previousNormF = normF;
     }
     if (reuse_) {
-      // The tangent changes little while the contact set stays the same
-      // (the bulk not at all when linear): the preconditioner of the last
-      // solve still serves, and its setup (MueLu: a quarter of a contact
-      // iteration) is saved. The first solve of a step always builds one
-      // (a cutback or a new step may have changed the set since).
-      // Only over the same matrix structure: the preconditioner keeps
-      // references into the matrix it was built from (Ifpack2's smoother
-      // caches what it derives from the graph), so a matrix completed in
-      // place with a new column map would be read through stale indices.
-      // The old matrix of a new one stays alive in the preconditioner, so
-      // equal addresses mean the same object.
+      // The tangent changes little while the contact set stays the same:
+      // the last built preconditioner still serves, and its setup (MueLu: a
+      // quarter of a contact iteration) is saved. It is no longer the exact
+      // preconditioner of that matrix: the matrix is mostly updated in
+      // place, so the smoothers apply the new values with what they derived
+      // from the old ones (diagonals). Kept only
+      //  - after the step's first solve (a cutback or a new step may have
+      //    changed the set since);
+      //  - after a converged solve (a kept preconditioner that let GMRES
+      //    fail is not kept again);
+      //  - over the same matrix structure: the preconditioner keeps
+      //    references into the matrix it was built from (Ifpack2's smoother
+      //    caches what it derives from the graph), so a matrix completed in
+      //    place with a new column map would be read through stale indices.
       const auto& set = reuse_->contact->lastSummary().activeSet;
       const bool sameSet = set.changed == 0 && set.stickSlipChanged == 0;
-      const auto matrix = Teuchos::rcp_dynamic_cast<const CrsMatrix>(
-          Thyra::TpetraOperatorVectorExtraction<Scalar, LocalOrdinal, GlobalOrdinal>::getConstTpetraOperator(lop_));
       PreconditionerReuse::Structure now;
-      if (!matrix.is_null())
-        now = {matrix.get(), matrix->getCrsGraph().get(), matrix->getColMap().get(), matrix->getNodeNumEntries()};
+      now.matrix = Teuchos::rcp_dynamic_cast<const CrsMatrix>(
+          Thyra::TpetraOperatorVectorExtraction<Scalar, LocalOrdinal, GlobalOrdinal>::getConstTpetraOperator(lop_));
+      if (!now.matrix.is_null()) {
+        now.graph = now.matrix->getCrsGraph();
+        now.columns = now.matrix->getColMap();
+        now.entries = now.matrix->getNodeNumEntries();
+      }
       // NOX builds the preconditioner (prec_, from the factory's
       // preconditioner factory) before each solve unless told not to. The
-      // set is the same on every rank; the structure is agreed on.
-      bool keep = reuse_->solves > 0 && sameSet && !prec_.is_null() && !matrix.is_null();
-      if (keep) keep = !anyRank(*matrix->getRowMap()->getComm(), !(now == reuse_->built));
+      // set and the solve status are the same on every rank; the structure
+      // is agreed on.
+      bool keep = reuse_->solves > 0 && sameSet && last_linear_solve_status_ == NOX::Abstract::Group::Ok &&
+                  !prec_.is_null() && !now.matrix.is_null();
+      if (keep) keep = !anyRank(*now.matrix->getRowMap()->getComm(), !now.same(reuse_->built));
       reuse_->lastReused = keep;
       if (!keep) reuse_->built = now;
-      updatePreconditioner_ = !reuse_->lastReused;
+      updatePreconditioner_ = !keep;
       ++reuse_->solves;
     }
     return NOX::Thyra::Group::computeNewton(p);

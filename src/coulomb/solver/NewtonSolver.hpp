@@ -26,8 +26,10 @@ struct NewtonSettings {
   LinearToleranceSettings linearTolerance;  ///< Krylov tolerance per iteration (LinearTolerance.hpp)
   /// With contact and an iterative solver: a Newton iteration whose contact
   /// set (active nodes, stick/slip) did not change since the last solve of
-  /// the step keeps that solve's preconditioner (Thyra::initializeAndReuseOp)
-  /// instead of building a new one ('Newton/Reuse Preconditioner').
+  /// the step, whose matrix has the same structure and whose last solve
+  /// converged keeps the last built preconditioner instead of building a
+  /// new one (NOX::Thyra::Group's updatePreconditioner_ cleared for that
+  /// solve; 'Newton/Reuse Preconditioner').
   bool reusePreconditioner = true;
 };
 
