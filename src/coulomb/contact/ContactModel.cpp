@@ -69,7 +69,7 @@ void ContactModel::restoreStep() {
 
 template <class UpdatePair>
 void ContactModel::updatePairs(bool freezeSet, UpdatePair&& updatePair) {
-  contributions_.clear();
+  contributions_ = ContactContributions();
   summary_ = ContactIterationSummary();
   double normal2 = 0, force2 = 0, stick2 = 0, slip2 = 0, tangential2 = 0;
   for (std::size_t p = 0; p < pairs_.size(); ++p) {
@@ -144,10 +144,7 @@ Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMat
   // matrix product: every entry of T - I sits in a column of a slave node's
   // DoF, emitted by the rank that owns that node (ContactPair::update), which
   // also owns the node's rows of K and emitted its rows of K_c.
-  // A member buffer: its storage outlives the call (the next tangent has
-  // about as many interface rows).
-  auto& interfaceRows = interfaceRows_;
-  interfaceRows.assign(contributions_.contactStiffness.begin(), contributions_.contactStiffness.end());
+  std::vector<linalg::MatrixTriplet> interfaceRows = contributions_.contactStiffness;
   interfaceRows.insert(interfaceRows.end(), contributions_.constraint.begin(), contributions_.constraint.end());
   std::unordered_map<GlobalOrdinal, std::vector<std::pair<GlobalOrdinal, double>>> stiffnessRows;
   for (const auto& t : contributions_.contactStiffness) stiffnessRows[t.row].push_back({t.column, t.value});

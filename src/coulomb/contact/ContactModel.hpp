@@ -137,8 +137,7 @@ private:
   int updatesInStep_ = 0;
   Teuchos::RCP<CrsMatrix> transform_;  ///< T - I (for the residual)
   ContactContributions contributions_;
-  mutable std::vector<linalg::MatrixTriplet> interfaceRows_;  ///< condensedTangent's work list
-    mutable linalg::MatrixSum tangentSum_;  ///< J = K + [...] with buffers (and J itself) reused per iterate
+  mutable linalg::MatrixSum tangentSum_;  ///< J = K + [...] with buffers (and J itself) reused per iterate
   bool contributes_ = false;  ///< some rank has transform or stiffness entries
 };
 

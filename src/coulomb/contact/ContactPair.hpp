@@ -76,15 +76,6 @@ struct ContactContributions {
   std::vector<linalg::VectorEntry> contactResidual;     ///< -f_c (penalty pairs)
   SaddlePointContributions saddle;                      ///< ALM pairs, uncondensed form
   MultiplierBlock multipliers;  ///< System Form = Saddle Point (then transform etc. stay empty)
-  /// Empties every list but keeps its storage: the next iterate emits about
-  /// as many entries again, without growing the vectors from nothing.
-  void clear() {
-    for (auto* v : {&transform, &tangentTransform, &constraint, &contactStiffness, &saddle.columns, &saddle.rows,
-                    &multipliers.columns, &multipliers.rows})
-      v->clear();
-    for (auto* v : {&constraintResidual, &contactResidual, &saddle.gap, &saddle.force, &multipliers.residual})
-      v->clear();
-  }
 };
 
 /// @brief Per-update figures of one pair, summed over ranks.
