@@ -74,46 +74,49 @@ public:
       forcing_->previousNormF = normF;
     }
     if (reuse_) {
-      // The tangent changes little while the contact set stays the same:
-      // the last built preconditioner still serves, and its setup (MueLu: a
-      // quarter of a contact iteration) is saved. It is no longer the exact
-      // preconditioner of that matrix: the matrix is mostly updated in
-      // place, so the smoothers apply the new values with what they derived
-      // from the old ones (diagonals). Kept only
-      //  - after the step's first solve (a cutback or a new step may have
-      //    changed the set since);
-      //  - after a converged solve (a kept preconditioner that let GMRES
-      //    fail is not kept again);
-      //  - over the same matrix structure: the preconditioner keeps
-      //    references into the matrix it was built from (Ifpack2's smoother
-      //    caches what it derives from the graph), so a matrix completed in
-      //    place with a new column map would be read through stale indices.
-      const auto& set = reuse_->contact->lastSummary().activeSet;
-      const bool sameSet = set.changed == 0 && set.stickSlipChanged == 0;
-      PreconditionerReuse::Structure now;
-      now.matrix = Teuchos::rcp_dynamic_cast<const CrsMatrix>(
-          Thyra::TpetraOperatorVectorExtraction<Scalar, LocalOrdinal, GlobalOrdinal>::getConstTpetraOperator(lop_));
-      if (!now.matrix.is_null()) {
-        now.graph = now.matrix->getCrsGraph();
-        now.columns = now.matrix->getColMap();
-        now.entries = now.matrix->getNodeNumEntries();
-      }
-      // NOX builds the preconditioner (prec_, from the factory's
-      // preconditioner factory) before each solve unless told not to. The
-      // set and the solve status are the same on every rank; the structure
-      // is agreed on.
-      bool keep = reuse_->solves > 0 && sameSet && last_linear_solve_status_ == NOX::Abstract::Group::Ok &&
-                  !prec_.is_null() && !now.matrix.is_null();
-      if (keep) keep = !anyRank(*now.matrix->getRowMap()->getComm(), !now.same(reuse_->built));
+      const bool keep = keepPreconditioner();
       reuse_->lastReused = keep;
-      if (!keep) reuse_->built = now;
-      updatePreconditioner_ = !keep;
+      updatePreconditioner_ = !keep;  // NOX builds prec_ before each solve unless told not to
       ++reuse_->solves;
     }
     return NOX::Thyra::Group::computeNewton(p);
   }
 
 private:
+  /// Whether this solve keeps the last built preconditioner. The tangent
+  /// changes little while the contact set stays the same, and the setup
+  /// (MueLu: a quarter of a contact iteration) is saved. It is no longer
+  /// the exact preconditioner of that matrix: the matrix is mostly updated
+  /// in place, so the smoothers apply the new values with what they derived
+  /// from the old ones (diagonals). Kept only
+  ///  - after the step's first solve (a cutback or a new step may have
+  ///    changed the set since);
+  ///  - after a converged solve (a kept preconditioner that let GMRES fail
+  ///    is not kept again);
+  ///  - over the same matrix structure: the preconditioner keeps references
+  ///    into the matrix it was built from (Ifpack2's smoother caches what it
+  ///    derives from the graph), so a matrix completed in place with a new
+  ///    column map would be read through stale indices.
+  /// The set and the solve status are the same on every rank; the structure
+  /// is agreed on. Records the structure whenever a new one is built.
+  bool keepPreconditioner() {
+    const auto& set = reuse_->contact->lastSummary().activeSet;
+    const bool sameSet = set.changed == 0 && set.stickSlipChanged == 0;
+    PreconditionerReuse::Structure now;
+    now.matrix = Teuchos::rcp_dynamic_cast<const CrsMatrix>(
+        Thyra::TpetraOperatorVectorExtraction<Scalar, LocalOrdinal, GlobalOrdinal>::getConstTpetraOperator(lop_));
+    if (!now.matrix.is_null()) {
+      now.graph = now.matrix->getCrsGraph();
+      now.columns = now.matrix->getColMap();
+      now.entries = now.matrix->getNodeNumEntries();
+    }
+    bool keep = reuse_->solves > 0 && sameSet && last_linear_solve_status_ == NOX::Abstract::Group::Ok &&
+                !prec_.is_null() && !now.matrix.is_null();
+    if (keep) keep = !anyRank(*now.matrix->getRowMap()->getComm(), !now.same(reuse_->built));
+    if (!keep) reuse_->built = now;
+    return keep;
+  }
+
   std::shared_ptr<Forcing> forcing_;
   std::shared_ptr<PreconditionerReuse> reuse_;
 };
