@@ -72,4 +72,3 @@ coulomb_bad_input(contact_saddle_point_frictional "'Contact/System Form' = Saddl
 coulomb_bad_input(contact_saddle_point_iterative_solver "'Linear Solver/Linear Solver Type' must be Amesos2")
 coulomb_bad_input(dirichlet_rotation_with_value "'Dirichlet Conditions/turn/Rotation Angle'.*no 'Value'")
 coulomb_bad_input(contact_friction_missing_field "'Contact/Pairs/punch/Friction Coefficient Field'.*no nodal variable 'mu'")
-coulomb_bad_input(contact_penetration_beyond_search_radius "Contact/Pairs/punch: slave node [0-9]+ penetrates the master by .*search radius")

@@ -119,7 +119,13 @@ TEST(ContactPatch, TwoDimensionalNonMatchingTransmitsUniformPressure) {
 }
 
 TEST(ContactPatch, ThreeDimensionalNonMatchingTransmitsUniformPressure) {
-  auto run = runDeck("contact_patch_3d");
+  // The patch test checks the discretisation to round-off, so Newton is
+  // asked for it (the default 1e-8 of the force scale stops at 1.2e-9 delta).
+  ShippedDeck deck("contact_patch_3d", "contact_patch3d.e");
+  const std::string contact = "<ParameterList name=\"Contact\">";
+  deck.replace(contact, "<ParameterList name=\"Newton\"><Parameter name=\"Relative Tolerance\" type=\"double\" "
+                        "value=\"1e-12\"/></ParameterList>\n  " + contact);
+  auto run = runDeckText("contact_patch_3d_tight", deck.text);
   const double E = 210000, nu = 0.3, delta = 0.01;
   double error = 0;
   forOwnedNodes(*run.simulation, [&](long long, const double* X, const double* u) {
@@ -328,6 +334,32 @@ TEST(ContactPairs, SurfacesThatNeverMeetGiveNoActiveNode) {
   }
 }
 
+
+// A slave surface that sinks deeper into the master than the search radius
+// reaches (a soft penalty, 1 MPa/mm, and 'Search Radius Factor' = 0.01: a
+// radius of 0.0014 mm against a penetration of about 0.01 mm) must not lose
+// its contact: before, the run stopped with an error, and at smaller steps
+// the search lost the sunken nodes and gave a zero reaction. The radius is
+// widened to twice the depth and the step retried; the patch then carries
+// the uniform pressure p = eps (delta - p H / E'), H = 1, E' = E / (1 - nu^2).
+TEST(ContactPairs, PenetrationBeyondTheSearchRadiusWidensIt) {
+  ShippedDeck deck("contact_patch_2d", "contact_patch2d.e");
+  deck.replace("<Parameter name=\"Slave\" type=\"string\" value=\"slave\"/>",
+               "<Parameter name=\"Slave\" type=\"string\" value=\"slave\"/>"
+               "<Parameter name=\"Formulation\" type=\"string\" value=\"Penalty\"/>"
+               "<Parameter name=\"Penalty\" type=\"double\" value=\"1\"/>"
+               "<Parameter name=\"Search Radius Factor\" type=\"double\" value=\"0.01\"/>");
+  auto run = runDeckText("contact_search_radius_widened", deck.text);
+  const double E = 210000, nu = 0.3, delta = 0.01, eps = 1.0;
+  const double p = eps * delta / (1 + eps * (1 - nu * nu) / E);
+  // The step that found the deep nodes is retried after the widening (a cutback).
+  EXPECT_GE(run.summary.cutbacks, 1);
+  ASSERT_FALSE(run.summary.stepTimes.empty());
+  EXPECT_EQ(run.summary.stepTimes.back(), 1.0);
+  if (worldComm()->getRank() != 0) return;
+  EXPECT_NEAR(lastGlobal(run.results, "reaction_top_y"), -p, 1e-6 * p);
+  EXPECT_EQ(lastGlobal(run.results, "contact_active_nodes_punch"), 8.0);
+}
 
 // Simplified semi-smooth Newton (set updated at the start of a step only,
 // and again when the frozen set violates the contact conditions) reaches the

@@ -378,6 +378,58 @@ TEST(Mortar3DLinearization, Tri3OnTri3) {
   checkDerivatives<FaceType::Tri3, FaceType::Tri3>(slaveTri(), turnedTri(), 6);
 }
 
+// A master Quad4 whose projection is not convex (a dart, reflex vertex C
+// = (0.3, 0.3)): before, its Gauss points fell where the bilinear map folds
+// and the inversion failed ("did not converge"), ending the run. It is now
+// integrated as the two triangles either side of the diagonal through C.
+Quad dart(double z0, double tilt) {
+  auto at = [&](double x, double y) { return V3{x, y, z0 + tilt * (x + 0.5 * y)}; };
+  return {{at(-1.0, -1.0), at(2.0, -1.0), at(0.3, 0.3), at(-1.0, 2.0)}};
+}
+
+double shoelace(const std::vector<std::array<double, 2>>& p) {
+  double a = 0.0;
+  for (std::size_t k = 0; k < p.size(); ++k) {
+    const auto& u = p[k];
+    const auto& v = p[(k + 1) % p.size()];
+    a += u[0] * v[1] - v[0] * u[1];
+  }
+  return 0.5 * a;
+}
+
+TEST(Mortar3D, NonConvexMasterQuadIsIntegratedAsTwoTriangles) {
+  const double g = 0.05;
+  const auto r = integrateSegment3D<FaceType::Quad4, FaceType::Quad4, double>(
+      rect(0.0, 0.0, 1.0, 1.0, 0.0), constantNormals<FaceType::Quad4>({0.0, 0.0, 1.0}), dart(g, 0.0));
+  ASSERT_TRUE(r.contributes);
+  // Overlap = square ∩ {x + y <= 1} minus square ∩ triangle BCD, the notch:
+  // the polygon C, (9/13, 0), (1, 0), (0, 1), (0, 9/13).
+  const double notch = shoelace({{0.3, 0.3}, {9.0 / 13.0, 0.0}, {1.0, 0.0}, {0.0, 1.0}, {0.0, 9.0 / 13.0}});
+  const double area = 0.5 - notch;  // = the quadrilateral (0,0), (9/13,0), C, (0,9/13)
+  EXPECT_NEAR(area, 0.5 * 2 * (9.0 / 13.0) * 0.3, 1e-15);
+  EXPECT_NEAR(r.area, area, 1e-13);
+  double sumD = 0.0;
+  for (int j = 0; j < 4; ++j) {
+    sumD += r.D[j];
+    EXPECT_NEAR(r.gap[j], g * r.D[j], 1e-14);
+    EXPECT_NEAR(r.M[j][0] + r.M[j][1] + r.M[j][2] + r.M[j][3], r.D[j], 1e-14);
+  }
+  EXPECT_NEAR(sumD, area, 1e-13);
+  // By the symmetry x <-> y of the dart and the square: D of (1,0) equals D
+  // of (0,1), and M of master nodes B and D swap.
+  EXPECT_NEAR(r.D[1], r.D[3], 1e-14);
+  EXPECT_NEAR(r.M[1][1], r.M[3][3], 1e-14);
+}
+
+TEST(Mortar3DLinearization, NonConvexMasterQuad) {
+  // A tilted dart: the gap varies over the overlap; the derivatives of the
+  // two-triangle integration against central differences.
+  const auto probe = integrateSegment3D<FaceType::Quad4, FaceType::Quad4, double>(
+      slaveQuad(), tiltedNormals<FaceType::Quad4>(), dart(0.1, 0.05));
+  ASSERT_TRUE(probe.contributes);
+  checkDerivatives<FaceType::Quad4, FaceType::Quad4>(slaveQuad(), dart(0.1, 0.05), probe.polygonVertices);
+}
+
 TEST(Mortar3DLinearization, ObliqueMasterTriangleInsideSlave) {
   // The whole master triangle inside the slave quad (all clip vertices are
   // projected master nodes), everything rotated to an oblique plane.

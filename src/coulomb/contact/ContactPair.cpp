@@ -178,13 +178,20 @@ void ContactPair::restoreStep() {
   restored_ = true;
 }
 
-std::string ContactPair::penetrationFailure(long long node, double gap, double D) const {
+std::string ContactPair::penetrationFailure(long long node, double gap, double D) {
   if (gap / D >= -radius_) return "";
+  deepest_ = std::max(deepest_, -gap / D);
   std::ostringstream message;
   message << "Contact/Pairs/" << settings_.name << ": slave node " << node + 1 << " penetrates the master by "
-          << -gap / D << ", more than the search radius " << radius_
-          << ": raise 'Search Radius Factor' or use more load steps";
+          << -gap / D << ", more than the search radius " << radius_ << ": the search radius is widened";
   return message.str();
+}
+
+void ContactPair::widenSearchRadius() {
+  double deepest = 0.0;
+  Teuchos::reduceAll(*interface_->comm(), Teuchos::REDUCE_MAX, deepest_, Teuchos::outArg(deepest));
+  deepest_ = 0.0;
+  if (deepest > 0.0) widenedRadius_ = std::max(widenedRadius_, 2.0 * deepest);
 }
 
 bool ContactPair::isPrescribed(long long node, int c) const {
@@ -200,7 +207,7 @@ void ContactPair::searchAndIntegrate(const Vector& u) {
   NodalMortarQuantities local;
   try {
     if (!searched_ || settings_.searchEveryIteration) {
-      radius_ = defaultSearchRadius(*interface_, x_, settings_.searchRadiusFactor);
+      radius_ = std::max(defaultSearchRadius(*interface_, x_, settings_.searchRadiusFactor), widenedRadius_);
       search_ = searchContactPairs(*interface_, x_, radius_);
       searched_ = true;
     }
@@ -213,7 +220,7 @@ void ContactPair::searchAndIntegrate(const Vector& u) {
   } catch (const Error& e) {
     failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();
   }
-  throwIfAnyRankFailed(*interface_->comm(), failure);
+  throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
   mortar_ = sumToOwners(*interface_, local);
 }
 
@@ -260,7 +267,7 @@ void ContactPair::differentiate(const std::vector<char>& ownedFlags) {
   } catch (const Error& e) {
     failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();
   }
-  throwIfAnyRankFailed(*interface_->comm(), failure);
+  throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
   mortarDerivatives_ = sumToOwners(*interface_, partial);
 }
 
@@ -320,7 +327,10 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
     }
     state_[i] = state;
     countState(summary.activeSet, state, previous);
-    if (state == ContactState::Active && failure.empty()) failure = penetrationFailure(node, gap, D);
+    if (state == ContactState::Active) {
+      std::string deep = penetrationFailure(node, gap, D);
+      if (failure.empty()) failure = std::move(deep);
+    }
     if (alm) {
       lambdaN_[i] = lambdaN;
       pressure_[i] = -k_ * lambdaN;
@@ -329,7 +339,8 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
       lambdaN_[i] = -pressure_[i] / k_;
     }
   }
-  throwIfAnyRankFailed(*interface_->comm(), failure);
+  widenSearchRadius();
+  throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
   differentiateActive();
 
   for (std::size_t i = 0; i < owned.size(); ++i) {

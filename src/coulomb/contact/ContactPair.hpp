@@ -159,7 +159,14 @@ private:
   /// given, dw_c / dx as three rows.
   std::array<double, 3> weightedSlip(const NodalMortarEntry& entry, std::array<DerivativeRow, 3>* derivative) const;
   /// The message when an active node penetrates deeper than the search radius, else "".
-  std::string penetrationFailure(long long node, double gap, double D) const;
+  /// A message when an active node penetrates deeper than the search radius
+  /// (empty otherwise); records the depth for widenSearchRadius().
+  std::string penetrationFailure(long long node, double gap, double D);
+  /// Collective: after a pass over the nodes, a penetration deeper than the
+  /// search radius on any rank widens the radius to twice the deepest one
+  /// for every later search of the run (the iterate is then rejected by the
+  /// caller's failure, and the step retried with the wider search).
+  void widenSearchRadius();
   /// Stores the new state of owned node i (friction: an open node has no slip,
   /// and it is marked when it opens) and counts it into the summary.
   void settleState(std::size_t i, ContactState state, ContactState previous, PairIterationSummary& summary);
@@ -183,6 +190,8 @@ private:
   /// prescribed_[i][c]: component c of interface node i is a Dirichlet DoF.
   std::vector<std::array<bool, 3>> prescribed_;
   bool searched_ = false;
+  double deepest_ = 0.0;         ///< this pass: deepest penetration beyond the radius (this rank)
+  double widenedRadius_ = 0.0;   ///< the search radius never goes below this (widenSearchRadius)
   SearchResult search_;
   InterfaceConfiguration x_;          ///< current interface coordinates (last update)
   std::vector<NodalNormal> normals_;  ///< by slave node index, values

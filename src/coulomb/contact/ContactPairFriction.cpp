@@ -226,14 +226,18 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
       for (int c = 0; c < 3; ++c) slipIncrement_[i][c] = -w[c] / entry->D;  // the slave relative to the master
       state = nextState(decided.state, previous, updateSet, summary.violations);
       if (state == ContactState::Inactive) decided = State{};
-      if (isActive(state) && failure.empty()) failure = penetrationFailure(node, entry->gap, entry->D);
+      if (isActive(state)) {
+        std::string deep = penetrationFailure(node, entry->gap, entry->D);
+        if (failure.empty()) failure = std::move(deep);
+      }
     }
     settleState(i, state, previous, summary);
     lambdaN_[i] = decided.lambdaN;
     pressure_[i] = -k_ * decided.lambdaN;
     traction_[i] = decided.traction;
   }
-  throwIfAnyRankFailed(*interface_->comm(), failure);
+  widenSearchRadius();
+  throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
   differentiateActive();
 
   // Stage 2: the rows of the active nodes and their derivatives.
@@ -405,12 +409,16 @@ PairIterationSummary ContactPair::updatePenaltyFrictional(bool updateSet, Contac
       p.law.coefficient = settings_.frictionCoefficient(node);
       state = nextState(decide(normals_[s].n, w, i, entry->D, entry->gap, previous), previous, updateSet,
                         summary.violations);
-      if (isActive(state) && failure.empty()) failure = penetrationFailure(node, entry->gap, entry->D);
+      if (isActive(state)) {
+        std::string deep = penetrationFailure(node, entry->gap, entry->D);
+        if (failure.empty()) failure = std::move(deep);
+      }
     }
     settleState(i, state, previous, summary);
     if (!isActive(state)) traction_[i] = {0.0, 0.0, 0.0}, lambdaN_[i] = pressure_[i] = 0.0;
   }
-  throwIfAnyRankFailed(*interface_->comm(), failure);
+  widenSearchRadius();
+  throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
   differentiateActive();
 
   // Stage 2: forces f on the slave (residual -f, K_c = -df/dx) and -(M/D) f on the masters.

@@ -89,7 +89,10 @@ PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::
     }
     state_[i] = state;
     countState(summary.activeSet, state, previous);
-    if (state == ContactState::Active && failure.empty()) failure = penetrationFailure(node, entry->gap, entry->D);
+    if (state == ContactState::Active) {
+      std::string deep = penetrationFailure(node, entry->gap, entry->D);
+      if (failure.empty()) failure = std::move(deep);
+    }
     lambdaN_[i] = state == ContactState::Active ? lambdaN : 0.0;
     pressure_[i] = -k_ * lambdaN_[i];
     // Derivatives where the rows or forces depend on the geometry: active
@@ -97,7 +100,8 @@ PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::
     const bool carries = lambda[i][0] != 0.0 || lambda[i][1] != 0.0 || lambda[i][2] != 0.0;
     differentiateNode[i] = usable[i] && (state == ContactState::Active || carries);
   }
-  throwIfAnyRankFailed(*interface_->comm(), failure);
+  widenSearchRadius();
+  throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
   differentiate(differentiateNode);
 
   auto row = [this](long long node, int c) { return dofRow(node, c); };

@@ -69,7 +69,7 @@ void addValidContactParameters(ParameterList& valid) {
            io::oneOf({"Full", "Simplified"}));
   pair.set("Search Every Iteration", d.searchEveryIteration, "search candidates every Newton iteration (else per step)");
   pair.set("Search Radius Factor", d.searchRadiusFactor,
-           "search radius = this x the largest slave face diameter: must exceed the gap closed in one step",
+           "search radius = this x the largest slave face diameter: should exceed the gap closed in one step; an active node found deeper than the radius widens it to twice its depth for the rest of the run (the step is retried)",
            io::positive());
   pair.set("Friction Law", "None",
            "None: frictionless; Coulomb: |t_tau| <= mu p; Tresca: |t_tau| <= Tresca Threshold",

@@ -98,24 +98,38 @@ FacePoint<F, T> invertPlaneMap(const PlaneNodes<F, T>& pn, const Point2<T>& p) {
     const Point2<double> pd{valueOf(p[0]), valueOf(p[1])};
     const double size = std::hypot(nd[2][0] - nd[0][0], nd[2][1] - nd[0][1]) +
                         std::hypot(nd[3][0] - nd[1][0], nd[3][1] - nd[1][1]);
+    // Damped Newton from the centre: a step is at most 0.5 in xi and is
+    // halved until |F| decreases, so an iterate never jumps far outside the
+    // face where the bilinear map folds. Points are inside the (convex)
+    // projected face, where the map is invertible.
     FacePoint<F, double> xi{0.0, 0.0};
+    std::array<double, 2> Fd{};
+    std::array<std::array<double, 2>, 2> Jd{};
+    residual(nd, pd, xi, Fd, Jd);
+    double norm = std::hypot(Fd[0], Fd[1]);
     bool converged = false;
     for (int it = 0; it < 50 && !converged; ++it) {
-      std::array<double, 2> F0{};
-      std::array<std::array<double, 2>, 2> J{};
-      residual(nd, pd, xi, F0, J);
-      const double det = J[0][0] * J[1][1] - J[0][1] * J[1][0];
+      const double det = Jd[0][0] * Jd[1][1] - Jd[0][1] * Jd[1][0];
       COULOMB_REQUIRE(std::abs(det) > 1e-14 * size * size,
                       "mortar integration: degenerate or folded Quad4 face projection");
-      const double d0 = (J[1][1] * F0[0] - J[0][1] * F0[1]) / det;
-      const double d1 = (J[0][0] * F0[1] - J[1][0] * F0[0]) / det;
-      xi[0] -= d0;
-      xi[1] -= d1;
+      double d0 = (Jd[1][1] * Fd[0] - Jd[0][1] * Fd[1]) / det;
+      double d1 = (Jd[0][0] * Fd[1] - Jd[1][0] * Fd[0]) / det;
+      const double length = std::max(std::abs(d0), std::abs(d1));
+      if (length > 0.5) d0 *= 0.5 / length, d1 *= 0.5 / length;
       converged = std::abs(d0) + std::abs(d1) <= 1e-14 * (1.0 + std::abs(xi[0]) + std::abs(xi[1]));
+      FacePoint<F, double> trial{xi[0] - d0, xi[1] - d1};
+      residual(nd, pd, trial, Fd, Jd);
+      double trialNorm = std::hypot(Fd[0], Fd[1]);
+      for (int halving = 0; halving < 20 && !converged && !(trialNorm < norm); ++halving) {
+        d0 *= 0.5, d1 *= 0.5;
+        trial = {xi[0] - d0, xi[1] - d1};
+        residual(nd, pd, trial, Fd, Jd);
+        trialNorm = std::hypot(Fd[0], Fd[1]);
+      }
+      xi = trial;
+      norm = trialNorm;
+      converged = converged || norm <= 1e-15 * size;
     }
-    COULOMB_REQUIRE(converged && std::isfinite(xi[0]) && std::isfinite(xi[1]),
-                    "mortar integration: the inversion of a Quad4 face map did not converge "
-                    "(non-convex projected face?)");
     const FacePoint<F, T> xiT{T(xi[0]), T(xi[1])};
     std::array<T, 2> F0{};
     std::array<std::array<T, 2>, 2> J{};
@@ -124,6 +138,33 @@ FacePoint<F, T> invertPlaneMap(const PlaneNodes<F, T>& pn, const Point2<T>& p) {
     return {T(xiT[0] - (J[1][1] * F0[0] - J[0][1] * F0[1]) / det),
             T(xiT[1] - (J[0][0] * F0[1] - J[1][0] * F0[0]) / det)};
   }
+}
+
+/// Index of the vertex of a projected quadrilateral where it is not convex
+/// (the turn there has the other sign than the polygon's orientation), or
+/// -1 when it is convex. A self-intersecting (bow-tie) projection has two
+/// turns of each sign: vertex 0 (either diagonal splits it into two
+/// triangles). Turns smaller than `areaTolerance` count as straight.
+template <typename T>
+int reflexVertex(const PlaneNodes<FaceType::Quad4, T>& p, double areaTolerance) {
+  std::array<double, 4> turn{};
+  double area = 0.0;
+  for (int k = 0; k < 4; ++k) {
+    const auto& a = p[k];
+    const auto& b = p[(k + 1) % 4];
+    const auto& c = p[(k + 2) % 4];
+    turn[(k + 1) % 4] = valueOf(T((b[0] - a[0]) * (c[1] - b[1]) - (b[1] - a[1]) * (c[0] - b[0])));
+    area += valueOf(T(a[0] * b[1] - b[0] * a[1]));
+  }
+  const double sign = area >= 0 ? 1.0 : -1.0;
+  int against = 0, first = -1;
+  for (int k = 0; k < 4; ++k)
+    if (sign * turn[k] < -areaTolerance) {
+      ++against;
+      if (first < 0) first = k;
+    }
+  if (against == 0) return -1;
+  return against == 1 ? first : 0;
 }
 
 }  // namespace
@@ -181,60 +222,108 @@ MortarSegment3D<S, Mf, T> integrateSegment3D(const FaceNodes<S, T>& xs, const Fa
   const double slaveArea = valueOf(signedArea(slavePolygon));
   if (!(slaveArea > 0.0)) return out;
   if (!(std::abs(valueOf(signedArea(masterPolygon))) > relativeTolerance * slaveArea)) return out;
-  makeCounterClockwise(masterPolygon);
 
-  // 3. Clip polygon.
-  const double tolerance = relativeTolerance * std::sqrt(slaveArea);
-  const Polygon2<T> clip = clipConvexPolygon(masterPolygon, slavePolygon, tolerance);
-  if (clip.size < 3 || !(valueOf(signedArea(clip)) > relativeTolerance * slaveArea)) return out;
-  out.contributes = true;
-  out.polygonVertices = clip.size;
+  if constexpr (S == FaceType::Quad4)
+    COULOMB_REQUIRE(reflexVertex(ps, relativeTolerance * slaveArea) < 0,
+                    "mortar integration: a slave Quad4 face is not convex on its auxiliary plane (distorted element)");
 
-  // 4.-6. Cells, Gauss points, back-projection, integration.
+  // Master pieces: the face itself, or — a Quad4 whose projection is not
+  // convex (seen edge-on or badly distorted after a large predictor) — the
+  // two triangles either side of the diagonal through its reflex vertex,
+  // each integrated with the linear interpolation of its three nodes. The
+  // clip needs convex pieces, and points of a non-convex bilinear face have
+  // no inverse map there (the map folds).
+  struct Piece {
+    int count;
+    std::array<int, 4> node;
+  };
+  std::array<Piece, 2> pieces{};
+  int numPieces = 1;
+  pieces[0] = {nM, {0, 1, 2, 3}};
+  if constexpr (Mf == FaceType::Quad4) {
+    const int reflex = reflexVertex(pm, relativeTolerance * slaveArea);
+    if (reflex >= 0) {
+      numPieces = 2;
+      pieces[0] = {3, {reflex, (reflex + 1) % 4, (reflex + 2) % 4, -1}};
+      pieces[1] = {3, {(reflex + 2) % 4, (reflex + 3) % 4, reflex, -1}};
+    }
+  }
+
   const NodalMatrix<S, T> A = dualCoefficients<S, T>(xs);
   const TriangleRule7& rule = triangleRule7();
-  const Point2<T> centre = vertexAverage(clip);
-  const int cells = clip.size == 3 ? 1 : clip.size;
-  for (int c = 0; c < cells; ++c) {
-    const Point2<T>& q0 = clip.size == 3 ? clip.vertex[0] : centre;
-    const Point2<T>& q1 = clip.size == 3 ? clip.vertex[1] : clip.vertex[c];
-    const Point2<T>& q2 = clip.size == 3 ? clip.vertex[2] : clip.vertex[(c + 1) % clip.size];
-    const T cellArea = 0.5 * ((q1[0] - q0[0]) * (q2[1] - q0[1]) - (q1[1] - q0[1]) * (q2[0] - q0[0]));
-    for (int g = 0; g < 7; ++g) {
-      const std::array<double, 3>& L = rule.L[g];
-      const Point2<T> p{T(L[0] * q0[0] + L[1] * q1[0] + L[2] * q2[0]),
-                        T(L[0] * q0[1] + L[1] * q1[1] + L[2] * q2[1])};
-      const FacePoint<S, T> xi1 = invertPlaneMap<S, T>(ps, p);
-      const FacePoint<Mf, T> xi2 = invertPlaneMap<Mf, T>(pm, p);
-      const NodalValues<S, T> N1 = faceShapeValues<S, T>(xi1);
-      const NodalValues<S, T> phi = dualShapeValues<S, T, T>(A, xi1);
-      const NodalValues<Mf, T> N2 = faceShapeValues<Mf, T>(xi2);
-      const Vec3<T> x1 = facePoint<S, T, T>(xs, xi1);
-      const Vec3<T> x2 = facePoint<Mf, T, T>(xm, xi2);
-      Vec3<T> n{T(0.0), T(0.0), T(0.0)};
-      for (int a = 0; a < nS; ++a)
-        for (int i = 0; i < 3; ++i) n[i] += N1[a] * ns[a][i];
-      const T gn = dot(sub(x2, x1), n) / sqrt(dot(n, n));
-      T dA = rule.w[g] * cellArea;
-      if constexpr (S == FaceType::Quad4) {
-        // Slave surface measure over plane measure: |x_xi × x_eta| / ((x_xi × x_eta).n0).
-        const auto grad = faceShapeGradients<S, T>(xi1);
-        Vec3<T> tx{T(0.0), T(0.0), T(0.0)}, ty{T(0.0), T(0.0), T(0.0)};
+  const double tolerance = relativeTolerance * std::sqrt(slaveArea);
+  for (int k = 0; k < numPieces; ++k) {
+    const Piece& piece = pieces[k];
+    Polygon2<T> piecePolygon;
+    for (int a = 0; a < piece.count; ++a) piecePolygon.push(pm[piece.node[a]]);
+    if (!(std::abs(valueOf(signedArea(piecePolygon))) > relativeTolerance * slaveArea)) continue;
+    makeCounterClockwise(piecePolygon);
+
+    // 3. Clip polygon.
+    const Polygon2<T> clip = clipConvexPolygon(piecePolygon, slavePolygon, tolerance);
+    if (clip.size < 3 || !(valueOf(signedArea(clip)) > relativeTolerance * slaveArea)) continue;
+    out.contributes = true;
+    out.polygonVertices += clip.size;
+
+    // Master shape values at a plane point: the face map's inverse, or the
+    // barycentric coordinates of a triangle piece.
+    auto masterShape = [&](const Point2<T>& p) {
+      NodalValues<Mf, T> N2;
+      for (int l = 0; l < nM; ++l) N2[l] = 0.0;
+      if (numPieces == 1) return faceShapeValues<Mf, T>(invertPlaneMap<Mf, T>(pm, p));
+      PlaneNodes<FaceType::Tri3, T> tri{pm[piece.node[0]], pm[piece.node[1]], pm[piece.node[2]]};
+      const FacePoint<FaceType::Tri3, T> xi = invertPlaneMap<FaceType::Tri3, T>(tri, p);
+      N2[piece.node[0]] = 1.0 - xi[0] - xi[1];
+      N2[piece.node[1]] = xi[0];
+      N2[piece.node[2]] = xi[1];
+      return N2;
+    };
+
+    // 4.-6. Cells, Gauss points, back-projection, integration.
+    const Point2<T> centre = vertexAverage(clip);
+    const int cells = clip.size == 3 ? 1 : clip.size;
+    for (int c = 0; c < cells; ++c) {
+      const Point2<T>& q0 = clip.size == 3 ? clip.vertex[0] : centre;
+      const Point2<T>& q1 = clip.size == 3 ? clip.vertex[1] : clip.vertex[c];
+      const Point2<T>& q2 = clip.size == 3 ? clip.vertex[2] : clip.vertex[(c + 1) % clip.size];
+      const T cellArea = 0.5 * ((q1[0] - q0[0]) * (q2[1] - q0[1]) - (q1[1] - q0[1]) * (q2[0] - q0[0]));
+      for (int g = 0; g < 7; ++g) {
+        const std::array<double, 3>& L = rule.L[g];
+        const Point2<T> p{T(L[0] * q0[0] + L[1] * q1[0] + L[2] * q2[0]),
+                          T(L[0] * q0[1] + L[1] * q1[1] + L[2] * q2[1])};
+        const FacePoint<S, T> xi1 = invertPlaneMap<S, T>(ps, p);
+        const NodalValues<S, T> N1 = faceShapeValues<S, T>(xi1);
+        const NodalValues<S, T> phi = dualShapeValues<S, T, T>(A, xi1);
+        const NodalValues<Mf, T> N2 = masterShape(p);
+        const Vec3<T> x1 = facePoint<S, T, T>(xs, xi1);
+        Vec3<T> x2{T(0.0), T(0.0), T(0.0)};
+        for (int l = 0; l < nM; ++l)
+          for (int i = 0; i < 3; ++i) x2[i] += N2[l] * xm[l][i];
+        Vec3<T> n{T(0.0), T(0.0), T(0.0)};
         for (int a = 0; a < nS; ++a)
-          for (int i = 0; i < 3; ++i) {
-            tx[i] += grad[a][0] * xs[a][i];
-            ty[i] += grad[a][1] * xs[a][i];
-          }
-        const Vec3<T> nx = cross(tx, ty);
-        dA *= sqrt(dot(nx, nx)) / dot(nx, n0);
+          for (int i = 0; i < 3; ++i) n[i] += N1[a] * ns[a][i];
+        const T gn = dot(sub(x2, x1), n) / sqrt(dot(n, n));
+        T dA = rule.w[g] * cellArea;
+        if constexpr (S == FaceType::Quad4) {
+          // Slave surface measure over plane measure: |x_xi × x_eta| / ((x_xi × x_eta).n0).
+          const auto grad = faceShapeGradients<S, T>(xi1);
+          Vec3<T> tx{T(0.0), T(0.0), T(0.0)}, ty{T(0.0), T(0.0), T(0.0)};
+          for (int a = 0; a < nS; ++a)
+            for (int i = 0; i < 3; ++i) {
+              tx[i] += grad[a][0] * xs[a][i];
+              ty[i] += grad[a][1] * xs[a][i];
+            }
+          const Vec3<T> nx = cross(tx, ty);
+          dA *= sqrt(dot(nx, nx)) / dot(nx, n0);
+        }
+        for (int j = 0; j < nS; ++j) {
+          const T pw = phi[j] * dA;
+          out.D[j] += pw;
+          out.gap[j] += pw * gn;
+          for (int l = 0; l < nM; ++l) out.M[j][l] += pw * N2[l];
+        }
+        out.area += dA;
       }
-      for (int j = 0; j < nS; ++j) {
-        const T pw = phi[j] * dA;
-        out.D[j] += pw;
-        out.gap[j] += pw * gn;
-        for (int l = 0; l < nM; ++l) out.M[j][l] += pw * N2[l];
-      }
-      out.area += dA;
     }
   }
   return out;

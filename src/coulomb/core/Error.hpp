@@ -15,6 +15,17 @@ public:
   explicit Error(const std::string& message) : std::runtime_error(message) {}
 };
 
+/// @brief The residual or tangent could not be evaluated at one iterate: a
+/// projection or inverse map that did not converge, a degenerate contact
+/// geometry, a slave node deeper in the master than the search reaches, a
+/// non-finite value. Thrown on every rank alike (Parallel.hpp); the model
+/// evaluator turns it into a rejected iterate, so the load step fails and is
+/// cut back instead of the run ending. The message says what happened.
+class EvaluationError : public Error {
+public:
+  using Error::Error;
+};
+
 }  // namespace coulomb
 
 /// Always-on check: throws coulomb::Error with a streamed message.

@@ -11,17 +11,33 @@
 
 namespace coulomb {
 
-void throwIfAnyRankFailed(const Teuchos::Comm<int>& comm, const std::string& localMessage) {
+namespace {
+
+/// The message of the lowest rank that has one, on every rank; empty when none has.
+std::string agreedMessage(const Teuchos::Comm<int>& comm, const std::string& localMessage) {
   const int mine = localMessage.empty() ? INT_MAX : comm.getRank();
   int first = INT_MAX;
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, mine, Teuchos::outArg(first));
-  if (first == INT_MAX) return;
+  if (first == INT_MAX) return std::string();
   int length = comm.getRank() == first ? static_cast<int>(localMessage.size()) : 0;
   Teuchos::broadcast(comm, first, Teuchos::outArg(length));
   std::vector<char> buffer(localMessage.begin(), localMessage.end());
   buffer.resize(length);
   if (length > 0) Teuchos::broadcast(comm, first, length, buffer.data());
-  throw Error(std::string(buffer.begin(), buffer.end()));
+  std::string message(buffer.begin(), buffer.end());
+  return message.empty() ? std::string("(no message)") : message;
+}
+
+}  // namespace
+
+void throwIfAnyRankFailed(const Teuchos::Comm<int>& comm, const std::string& localMessage) {
+  const std::string message = agreedMessage(comm, localMessage);
+  if (!message.empty()) throw Error(message);
+}
+
+void throwEvaluationErrorIfAnyRank(const Teuchos::Comm<int>& comm, const std::string& localMessage) {
+  const std::string message = agreedMessage(comm, localMessage);
+  if (!message.empty()) throw EvaluationError(message);
 }
 
 bool anyRank(const Teuchos::Comm<int>& comm, bool local) {

@@ -13,6 +13,10 @@ namespace coulomb {
 /// rank throws coulomb::Error with the message of the lowest such rank.
 void throwIfAnyRankFailed(const Teuchos::Comm<int>& comm, const std::string& localMessage);
 
+/// @brief Collective: like throwIfAnyRankFailed, but throws
+/// coulomb::EvaluationError (the iterate is rejected, the step cut back).
+void throwEvaluationErrorIfAnyRank(const Teuchos::Comm<int>& comm, const std::string& localMessage);
+
 /// @brief Collective logical or.
 bool anyRank(const Teuchos::Comm<int>& comm, bool local);
 

@@ -392,6 +392,17 @@ AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residua
   return status;
 }
 
+double Assembler::externalForceNorm(double time) {
+  Vector zero(impl_->dofs.ownedMap()), residual(impl_->dofs.ownedMap()), reactions(impl_->dofs.ownedMap());
+  assemble(time, zero, &residual, nullptr, &reactions);
+  // Free rows of the residual hold -f_ext; the prescribed rows hold -u_bar
+  // (a length) there, and the reaction vector their load instead.
+  auto r = residual.getDataNonConst(0);
+  const auto q = reactions.getData(0);
+  for (int dof : constraints_->ownedConstrainedDofs()) r[dof] = q[dof];
+  return residual.norm2();
+}
+
 void Assembler::nodalStress(const Vector& u, MultiVector& stress) const {
   const Impl& m = *impl_;
   Vector overlapU(m.dofs.overlapMap());

@@ -54,6 +54,12 @@ public:
   AssemblyStatus assemble(double time, const Vector& u, Vector* residual, CrsMatrix* jacobian,
                           Vector* reactions = nullptr);
 
+  /// ||f_ext(t)||: the 2-norm over every DoF (prescribed ones included) of
+  /// the loads at `time` (surface loads and body forces; the internal force
+  /// at u = 0 is zero for every material here). A scale of the step's forces
+  /// for the Newton test. Collective; one residual assembly.
+  double externalForceNorm(double time);
+
   /// Nodal Cauchy stress by lumped L2 projection: owned node map, 7 columns
   /// (xx yy zz xy yz xz, von Mises).
   void nodalStress(const Vector& u, MultiVector& stress) const;

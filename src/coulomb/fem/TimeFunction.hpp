@@ -18,6 +18,8 @@ public:
   TimeFunction(std::vector<double> times, std::vector<double> values, const std::string& where);
 
   double operator()(double time) const;
+  /// The times of the points: where the slope changes (load stepping lands there).
+  const std::vector<double>& knots() const { return times_; }
 
 private:
   std::vector<double> times_;

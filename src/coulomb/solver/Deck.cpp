@@ -42,7 +42,7 @@ Teuchos::RCP<const ParameterList> validDeckParameters() {
     ParameterList& stepping = valid->sublist("Load Stepping", false, "Pseudo-time load stepping from t = 0");
     stepping.set("Number of Steps", 1, "equal steps to reach the final time", range<int>(1, 1000000));
     stepping.set("Final Time", 1.0, "pseudo time of the last step", io::positive());
-    stepping.set("Maximum Cutbacks", 5, "times a step may be halved and retried when Newton fails", range<int>(0, 50));
+    stepping.set("Maximum Cutbacks", 5, "times a step may be halved in a row and retried when Newton fails (never below Final Time / Number of Steps / 2^this); sub-steps land on every step end and load-function knot", range<int>(0, 50));
     stepping.set("Predictor", "Extrapolate",
                  "first Newton iterate of a step: Extrapolate (the last step's increment, scaled to this step) or "
                  "Previous (the last converged state); prescribed values are set in both",
@@ -52,9 +52,10 @@ Teuchos::RCP<const ParameterList> validDeckParameters() {
     const NewtonSettings defaults;
     newton.set("Maximum Iterations", defaults.maximumIterations, "iterations before a step counts as failed",
                range<int>(1, 1000));
-    newton.set("Relative Tolerance", defaults.relativeTolerance, "converged when ||f|| <= tol ||f_0||",
+    newton.set("Relative Tolerance", defaults.relativeTolerance, "converged when ||f|| <= tol x the iterate's force scale max(||reactions||, ||loads||, "
+               "||contact forces||) (or ||f_0|| of the step when larger; never below 1000 machine eps x it)",
                range<double>(0.0, 1.0));
-    newton.set("Absolute Tolerance", defaults.absoluteTolerance, "converged when ||f|| <= tol [force]",
+    newton.set("Absolute Tolerance", defaults.absoluteTolerance, "also converged when ||f|| <= tol [force]; 0: no absolute test",
                io::nonNegative());
     newton.set("Linear Tolerance", "Adaptive",
                "Krylov tolerance of each Newton solve: Adaptive (as loose as the iterate can use, "

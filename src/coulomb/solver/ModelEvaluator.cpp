@@ -1,5 +1,6 @@
 #include "coulomb/solver/ModelEvaluator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -80,10 +81,24 @@ void ModelEvaluator::evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<doubl
     jacobian = dynamic_cast<CrsMatrix*>(op.get());
     beforeJacobian_();
   }
-  const auto status = assembler_.assemble(time_, *x, f.get(), jacobian);
+  if (f != Teuchos::null && reactions_.is_null()) reactions_ = Teuchos::rcp(new Vector(map_));
+  const auto status = assembler_.assemble(time_, *x, f.get(), jacobian, f != Teuchos::null ? reactions_.get() : nullptr);
+  if (f != Teuchos::null) updateForceScale();
   // An inverted element makes this iterate meaningless: a NaN residual makes
   // NOX's FiniteValue test fail the step, and the stepper cuts back.
-  if (status.invertedElement && f != Teuchos::null) f->putScalar(std::numeric_limits<double>::quiet_NaN());
+  if (status.invertedElement) reject("an element is inverted (det F <= 0)", f.get());
+}
+
+void ModelEvaluator::updateForceScale() const {
+  if (externalNorm_ < 0) externalNorm_ = assembler_.externalForceNorm(time_);
+  double scale = std::max(externalNorm_, reactions_->norm2());
+  if (contact_) scale = std::max(scale, contact_->lastSummary().contactForce);
+  forceScale_ = std::isfinite(scale) ? scale : 0.0;
+}
+
+void ModelEvaluator::reject(const std::string& why, Vector* f) const {
+  failure_ = why;
+  if (f) f->putScalar(std::numeric_limits<double>::quiet_NaN());
 }
 
 namespace {
@@ -115,14 +130,26 @@ void ModelEvaluator::evalContact(const Vector& x, Vector* f, const Teuchos::RCP<
   const Vector& u = saddlePoint_ ? *displacement_ : x;
   if (anyRank(*map_->getComm(), local)) {
     if (bulkResidual_.is_null()) bulkResidual_ = Teuchos::rcp(new Vector(map_));
-    lastInverted_ = assembler_.assemble(time_, u, bulkResidual_.get(), nullptr).invertedElement;
-    lastInverted_ = anyRank(*map_->getComm(), lastInverted_ || !allFinite(*bulkResidual_));
-    if (!lastInverted_ && saddlePoint_) contact_->updateSaddlePoint(x, u);
-    else if (!lastInverted_) contact_->update(u, *bulkResidual_);
+    const auto& comm = *map_->getComm();
+    if (reactions_.is_null()) reactions_ = Teuchos::rcp(new Vector(map_));
+    const bool inverted =
+        anyRank(comm, assembler_.assemble(time_, u, bulkResidual_.get(), nullptr, reactions_.get()).invertedElement);
+    lastInvalid_ = inverted || anyRank(comm, !allFinite(*bulkResidual_));
+    if (lastInvalid_) failure_ = inverted ? "an element is inverted (det F <= 0)" : "the bulk residual is not finite";
+    try {
+      if (!lastInvalid_ && saddlePoint_) contact_->updateSaddlePoint(x, u);
+      else if (!lastInvalid_) contact_->update(u, *bulkResidual_);
+    } catch (const EvaluationError& e) {
+      // Thrown on every rank alike (Parallel.hpp): the contact state of this
+      // iterate is incomplete, the step fails and restores it.
+      lastInvalid_ = true;
+      failure_ = e.what();
+    }
+    if (!lastInvalid_) updateForceScale();
     lastX_ = Teuchos::rcp(new Vector(x, Teuchos::Copy));
   }
   if (f) {
-    if (lastInverted_) {
+    if (lastInvalid_) {
       f->putScalar(std::numeric_limits<double>::quiet_NaN());
     } else if (saddlePoint_) {
       contact_->saddlePointResidual(*bulkResidual_, *f);
@@ -130,8 +157,12 @@ void ModelEvaluator::evalContact(const Vector& x, Vector* f, const Teuchos::RCP<
       f->assign(*bulkResidual_);
       contact_->condenseResidual(*f);
     }
+    if (!lastInvalid_ && anyRank(*map_->getComm(), !allFinite(*f))) {
+      lastInvalid_ = true;
+      reject("the contact residual is not finite", f);
+    }
   }
-  if (W != Teuchos::null && !lastInverted_) {
+  if (W != Teuchos::null && !lastInvalid_) {
     beforeJacobian_();
     // Condensed form: K is assembled into the last condensed tangent (its
     // pattern holds K's), which condensedTangent() completes in place.

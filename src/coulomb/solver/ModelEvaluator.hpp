@@ -11,6 +11,7 @@
 /// the bulk residual at x; W is then a new matrix per iterate (its pattern
 /// follows the contact), put into the Thyra operator NOX holds.
 #include <functional>
+#include <string>
 
 #include <Thyra_LinearOpWithSolveFactoryBase.hpp>
 #include <Thyra_StateFuncModelEvaluatorBase.hpp>
@@ -35,6 +36,7 @@ public:
   /// Pseudo time at which loads and prescribed displacements are evaluated.
   void setTime(double time) {
     time_ = time;
+    externalNorm_ = -1.0;
     forgetIterate();
   }
   /// The next evaluation recomputes the contact state even at the same x.
@@ -44,6 +46,19 @@ public:
   /// K is recovered from the last tangent instead of assembled (the same
   /// values bit for bit; 'Newton/Reuse Constant Tangent', default true).
   void reuseConstantTangent(bool reuse) { reuseConstantTangent_ = reuse; }
+  /// Why the last rejected iterate could not be evaluated (an inverted
+  /// element, a contact geometry failure, a non-finite residual), or empty
+  /// when none was rejected since clearFailure(). A rejected iterate gets a
+  /// NaN residual on every rank: NOX's FiniteValue test fails the step.
+  const std::string& lastFailure() const { return failure_; }
+  void clearFailure() const { failure_.clear(); }
+  /// The force scale of the last evaluated iterate, for the Newton test
+  /// (NewtonSolver): max(||reactions||, ||f_ext(t)||, ||contact forces||),
+  /// each a 2-norm over the DoFs [force]. It does not depend on how good the
+  /// predictor was, and it carries the problem's force unit, so a problem in
+  /// mm/N/MPa and the same one in m/N/Pa converge alike. 0 before any
+  /// evaluation or when nothing is loaded.
+  double forceScale() const { return forceScale_; }
 
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_x_space() const override { return space_; }
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_f_space() const override { return space_; }
@@ -70,7 +85,15 @@ private:
   bool saddlePoint_ = false;  ///< contact in the saddle-point form: x = (u, z) on ContactModel::saddlePointMap()
   mutable Teuchos::RCP<Vector> lastX_, bulkResidual_, displacement_;
   mutable Teuchos::RCP<CrsMatrix> bulkTangent_;
-  mutable bool lastInverted_ = false;
+  mutable bool lastInvalid_ = false;  ///< the contact iterate lastX_ was rejected
+  mutable std::string failure_;
+  mutable Teuchos::RCP<Vector> reactions_;  ///< of the last residual evaluation
+  mutable double externalNorm_ = -1.0;      ///< ||f_ext(time_)||, < 0: not yet computed
+  mutable double forceScale_ = 0.0;
+  /// Sets forceScale_ from reactions_ (filled by the last bulk residual) and the contact forces.
+  void updateForceScale() const;
+  /// Marks the iterate rejected with `why` and fills `f` with NaN.
+  void reject(const std::string& why, Vector* f) const;
   void evalContact(const Vector& x, Vector* f, const Teuchos::RCP<Thyra::LinearOpBase<double>>& W) const;
 };
 

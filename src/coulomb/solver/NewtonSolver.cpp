@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <functional>
+#include <limits>
 #include <iomanip>
 #include <memory>
 
@@ -33,7 +36,7 @@ public:
   /// Shared by the clones NOX makes of the group: the residual norm before the previous step.
   struct Forcing {
     LinearToleranceSettings settings;
-    double target = 0;             ///< residual norm at which Newton stops
+    std::function<double()> target;  ///< residual norm at which Newton stops (at the current iterate)
     double previousNormF = -1.0;   ///< <= 0: no Newton step taken yet
   };
   /// Shared by the clones: when the last preconditioner is kept (NewtonSettings::reusePreconditioner).
@@ -70,7 +73,7 @@ public:
   NOX::Abstract::Group::ReturnType computeNewton(Teuchos::ParameterList& p) override {
     if (forcing_) {
       const double normF = getNormF();
-      p.set("Tolerance", linearTolerance(forcing_->settings, normF, forcing_->previousNormF, forcing_->target));
+      p.set("Tolerance", linearTolerance(forcing_->settings, normF, forcing_->previousNormF, forcing_->target()));
       forcing_->previousNormF = normF;
     }
     if (reuse_) {
@@ -119,6 +122,57 @@ private:
 
   std::shared_ptr<Forcing> forcing_;
   std::shared_ptr<PreconditionerReuse> reuse_;
+};
+
+/// The residual test: ||f|| <= max(tol, 1000 eps) × S, S the larger of the
+/// force scale of the iterate (ModelEvaluator::forceScale: reactions, loads,
+/// contact forces) and ||f_0|| of the step (what a problem with nothing
+/// loaded has); or ||f|| <=
+/// the deck's absolute tolerance when one is set. Measured against the
+/// problem's forces, not the step's first residual (tiny after a good
+/// predictor), and in the problem's force unit: the same iterations in
+/// mm/N/MPa and m/N/Pa. 1000 eps is the round-off floor a residual summed
+/// from element forces of size S can reach. The residual's noise can also
+/// come from forces that cancel (a body moved rigidly, stresses much larger
+/// than the reactions): so the test also passes once the Newton increment is
+/// below round-off of the solution itself, ||du|| <= 1000 eps ||u|| — the
+/// iterate no longer changes, whatever the residual's floor.
+class ScaledResidualTest : public NOX::StatusTest::Generic {
+public:
+  ScaledResidualTest(const ModelEvaluator& model, const NewtonSettings& settings, double initialNorm)
+      : model_(model), settings_(settings), initialNorm_(initialNorm) {}
+  /// ||f|| at which the test passes for the model's current force scale.
+  static double target(const ModelEvaluator& model, const NewtonSettings& settings, double initialNorm) {
+    const double scale = std::max(model.forceScale(), initialNorm);
+    const double relative = std::max(settings.relativeTolerance, 1e3 * std::numeric_limits<double>::epsilon());
+    return std::max(relative * scale, settings.absoluteTolerance);
+  }
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic& solver, NOX::StatusTest::CheckType) override {
+    normF_ = solver.getSolutionGroup().getNormF();
+    target_ = target(model_, settings_, initialNorm_);
+    bool converged = normF_ <= target_;
+    if (!converged && solver.getNumIterations() > 0 && std::isfinite(normF_)) {
+      const auto& x = solver.getSolutionGroup().getX();
+      auto increment = x.clone(NOX::DeepCopy);
+      increment->update(-1.0, solver.getPreviousSolutionGroup().getX(), 1.0);
+      const double size = x.norm();
+      converged = size > 0 && increment->norm() <= 1e3 * std::numeric_limits<double>::epsilon() * size;
+    }
+    status_ = converged ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
+    return status_;
+  }
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& stream, int indent = 0) const override {
+    for (int i = 0; i < indent; ++i) stream << ' ';
+    return stream << status_ << " ||f|| = " << normF_ << " <= " << target_ << " (force-scaled)\n";
+  }
+
+private:
+  const ModelEvaluator& model_;
+  const NewtonSettings& settings_;
+  double initialNorm_;
+  double normF_ = 0, target_ = 0;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
 /// Contact part of the convergence test: the active set did not change at
@@ -272,13 +326,19 @@ NewtonReport NewtonSolver::solve(Vector& u) {
   auto space = model_->get_x_space();
   auto thyraU = Thyra::createVector(Teuchos::rcpFromRef(u), space);
   NOX::Thyra::Vector initialGuess(thyraU);
+  model_->clearFailure();
   auto group = Teuchos::rcp(new CountingGroup(initialGuess, model_));
   group->computeF();
   if (settings_.linearTolerance.adaptive && !noxSetsLinearTolerance(*noxParameters_)) {
     auto forcing = std::make_shared<CountingGroup::Forcing>();
     forcing->settings = settings_.linearTolerance;
     forcing->settings.looseFirstIteration = contact_ != nullptr;
-    forcing->target = std::max(settings_.absoluteTolerance, settings_.relativeTolerance * group->getNormF());
+    const double initialNorm = group->getNormF();
+    const ModelEvaluator& model = *model_;
+    const NewtonSettings& settings = settings_;
+    forcing->target = [&model, &settings, initialNorm] {
+      return ScaledResidualTest::target(model, settings, initialNorm);
+    };
     group->setForcing(forcing);
   }
   std::shared_ptr<CountingGroup::PreconditionerReuse> reuse;
@@ -289,9 +349,7 @@ NewtonReport NewtonSolver::solve(Vector& u) {
   }
 
   using namespace NOX::StatusTest;
-  auto residualSmall = Teuchos::rcp(new Combo(Combo::OR));
-  residualSmall->addStatusTest(Teuchos::rcp(new NormF(settings_.absoluteTolerance, NormF::Unscaled)));
-  residualSmall->addStatusTest(Teuchos::rcp(new NormF(*group, settings_.relativeTolerance, NormF::Unscaled)));
+  auto residualSmall = Teuchos::rcp(new ScaledResidualTest(*model_, settings_, group->getNormF()));
   auto converged = Teuchos::rcp(new Combo(Combo::AND));
   converged->addStatusTest(residualSmall);
   if (contact_) converged->addStatusTest(Teuchos::rcp(new ContactStatusTest(*contact_)));
@@ -307,6 +365,7 @@ NewtonReport NewtonSolver::solve(Vector& u) {
   auto solver = NOX::Solver::buildSolver(group, tests, parameters);
   const auto status = solver->solve();
   report.converged = status == NOX::StatusTest::Converged;
+  report.failure = model_->lastFailure();
 
   const auto& solution = dynamic_cast<const NOX::Thyra::Vector&>(solver->getSolutionGroup().getX());
   u.assign(*Extract::getConstTpetraVector(solution.getThyraRCPVector()));

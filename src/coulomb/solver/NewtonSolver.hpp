@@ -3,6 +3,7 @@
 /// @brief One nonlinear solve (a load step) with NOX over the model
 /// evaluator, and the per-iteration console table.
 #include <ostream>
+#include <string>
 #include <vector>
 
 #include <Teuchos_ParameterList.hpp>
@@ -21,8 +22,12 @@ namespace coulomb::solver {
 /// @brief Convergence settings (deck sublist "Newton").
 struct NewtonSettings {
   int maximumIterations = 25;
-  double relativeTolerance = 1e-8;  ///< on ||f|| / ||f_0|| (f_0: residual at the step's start)
-  double absoluteTolerance = 1e-10; ///< on ||f||
+  /// Converged when ||f|| <= relativeTolerance × the force scale of the
+  /// iterate (reactions, loads, contact forces: ModelEvaluator::forceScale;
+  /// never below 1000 eps × it) ...
+  double relativeTolerance = 1e-8;
+  /// ... or when ||f|| <= absoluteTolerance [force] (0: no absolute test).
+  double absoluteTolerance = 0.0;
   LinearToleranceSettings linearTolerance;  ///< Krylov tolerance per iteration (LinearTolerance.hpp)
   /// With contact and an iterative solver: a Newton iteration whose contact
   /// set (active nodes, stick/slip) did not change since the last solve of
@@ -55,9 +60,13 @@ struct NewtonIteration {
 
 struct NewtonReport {
   bool converged = false;
+  /// Why an iterate could not be evaluated (ModelEvaluator::lastFailure), or empty.
+  std::string failure;
   std::vector<NewtonIteration> iterations;  ///< row 0: the initial residual
   int linearIterations() const;
   int preconditionerReuses() const;
+  /// The step's first iterate (the predictor) could not be evaluated.
+  bool rejectedStart() const { return !converged && !failure.empty() && iterations.size() <= 1; }
 };
 
 class NewtonSolver {

@@ -23,6 +23,7 @@
 #include "coulomb/solver/ModelEvaluator.hpp"
 #include "coulomb/solver/NewtonSolver.hpp"
 #include "coulomb/solver/ResultWriter.hpp"
+#include "coulomb/solver/StepController.hpp"
 
 namespace coulomb::solver {
 
@@ -104,6 +105,14 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
   displacement_ = Teuchos::rcp(new Vector(dofs_->ownedMap()));
   reactions_ = Teuchos::rcp(new Vector(dofs_->ownedMap()));
   if (contact_ && contact_->saddlePoint()) saddlePointState_ = Teuchos::rcp(new Vector(contact_->saddlePointMap()));
+
+  // Load stepping lands on every knot of a load function (its rate changes there).
+  auto addKnots = [this](const fem::TimeFunction& f) {
+    loadKnots_.insert(loadKnots_.end(), f.knots().begin(), f.knots().end());
+  };
+  for (const auto& d : model.dirichlet) addKnots(d.function);
+  for (const auto& n : model.neumann) addKnots(n.function);
+  for (const auto& b : model.bodyForces) addKnots(b.function);
 
   std::set<std::string> seen;
   for (const auto& d : model.dirichlet)
@@ -195,9 +204,14 @@ RunSummary Simulation::run() {
   if (console_)
     *console_ << "coulomb: " << mesh_->global().numElements() << " elements, " << summary.dofs << " DoFs, "
               << comm_->getSize() << " rank(s); result " << settings_.outputFile << "\n";
-  const double nominalStep = settings_.finalTime / settings_.numberOfSteps;
-  double time = 0.0, step = nominalStep;
-  int consecutiveCutbacks = 0, successesSinceCutback = 0;
+  StepController::Settings stepping;
+  stepping.finalTime = settings_.finalTime;
+  stepping.numberOfSteps = settings_.numberOfSteps;
+  stepping.maximumCutbacks = settings_.maximumCutbacks;
+  // A sub-step that needed more than half the allowed iterations does not
+  // count towards growing the size back (it would likely fail at twice it).
+  stepping.easyIterations = std::max(1, settings_.newton.maximumIterations / 2);
+  StepController steps(stepping, loadKnots_);
   const auto& constraints = assembler_->constraints();
   Vector trial(dofs_->ownedMap());
   // Linear extrapolation predictor: u_trial = u_n + (dt / dt_n) (u_n - u_n-1).
@@ -205,44 +219,65 @@ RunSummary Simulation::run() {
   // the semi-smooth iterations of nodes entering it.
   Vector lastIncrement(dofs_->ownedMap());
   double lastStep = 0.0;
-  while (time < settings_.finalTime * (1 - 1e-12)) {
-    const double next = std::min(time + step, settings_.finalTime);
+  std::string rejected;  // the last rejected iterate's reason since the last converged step
+  while (!steps.finished()) {
+    const double time = steps.time(), next = steps.nextTime();
     if (console_)
       *console_ << "step " << summary.steps + 1 << "  t = " << std::setprecision(6) << next << "  (dt = " << next - time
-                << ")\n";
+                << ", deck step " << steps.nominalStep() << " of " << settings_.numberOfSteps << ")\n";
     const auto stepStart = std::chrono::steady_clock::now();
-    trial.assign(*displacement_);
-    if (settings_.extrapolate && lastStep > 0) trial.update((next - time) / lastStep, lastIncrement, 1.0);
-    constraints.setPrescribedValues(next, trial);
-    solvers_->model->setTime(next);
-    if (contact_) contact_->beginStep();
-    const NewtonReport report = solve(trial);
+    auto attempt = [&](bool extrapolate) {
+      trial.assign(*displacement_);
+      if (extrapolate) trial.update((next - time) / lastStep, lastIncrement, 1.0);
+      constraints.setPrescribedValues(next, trial);
+      solvers_->model->setTime(next);
+      if (contact_) contact_->beginStep();
+      return solve(trial);
+    };
+    const bool extrapolate = settings_.extrapolate && lastStep > 0;
+    NewtonReport report = attempt(extrapolate);
+    if (extrapolate && report.rejectedStart()) {
+      // The extrapolated state could not be evaluated (it may fold a
+      // contact face or invert an element): start from the last converged
+      // state instead, before cutting the step.
+      if (console_)
+        *console_ << "  the extrapolated predictor was rejected (" << report.failure
+                  << "): starting the step from the last converged state\n";
+      if (contact_) contact_->restoreStep();
+      report = attempt(false);
+    }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - stepStart).count();
     const int iterations = static_cast<int>(report.iterations.size()) - 1;
     if (!report.converged) {
       ++summary.cutbacks;
-      ++consecutiveCutbacks;
-      COULOMB_REQUIRE(consecutiveCutbacks <= settings_.maximumCutbacks,
-                      "Newton did not converge at t = " << next << " after " << settings_.maximumCutbacks
-                                                        << " cutbacks ('Load Stepping/Maximum Cutbacks'); the result "
-                                                           "file keeps the converged steps as "
-                                                        << ResultWriter::partialPath(settings_.outputFile));
-      if (console_) *console_ << "  not converged after " << iterations << " iterations: cutting the step in half\n";
+      if (!report.failure.empty()) rejected = report.failure;
+      if (console_) {
+        *console_ << "  not converged after " << iterations << " iterations";
+        if (!report.failure.empty()) *console_ << ": an iterate was rejected (" << report.failure << ")";
+        *console_ << "\n";
+      }
+      COULOMB_REQUIRE(steps.reject(),
+                      "Newton did not converge at t = " << next << " (deck step " << steps.nominalStep() << " of "
+                          << settings_.numberOfSteps << ") with dt = " << next - time << " after "
+                          << steps.consecutiveCutbacks() << " cutbacks ('Load Stepping/Maximum Cutbacks' = "
+                          << settings_.maximumCutbacks << ")"
+                          << (rejected.empty() ? std::string() : "; an iterate was rejected: " + rejected)
+                          << "; the result file keeps the converged steps up to t = " << time << " as "
+                          << ResultWriter::partialPath(settings_.outputFile));
+      if (console_) *console_ << "  cutting the step: next dt = " << steps.nextTime() - time << "\n";
       if (contact_) contact_->restoreStep();
-      step /= 2;
-      successesSinceCutback = 0;
       continue;
     }
-    consecutiveCutbacks = 0;
+    steps.accept(iterations);
+    rejected.clear();
     lastIncrement.update(1.0, trial, -1.0, *displacement_, 0.0);
     lastStep = next - time;
-    time = next;
     displacement_->assign(trial);
-    assembler_->assemble(time, *displacement_, nullptr, nullptr, reactions_.get());
+    assembler_->assemble(next, *displacement_, nullptr, nullptr, reactions_.get());
     ++summary.steps;
     summary.newtonIterations += iterations;
     summary.linearIterations += report.linearIterations();
-    summary.stepTimes.push_back(time);
+    summary.stepTimes.push_back(next);
     summary.stepNewtonIterations.push_back(iterations);
     std::vector<double> norms;
     for (const auto& row : report.iterations) norms.push_back(row.residualNorm);
@@ -259,9 +294,9 @@ RunSummary Simulation::run() {
     summary.stepChangedNodes.push_back(changed);
     summary.stepStickSlipChanged.push_back(stickSlip);
     summary.stepPreconditionerKept.push_back(kept);
-    writeStep(time, {double(iterations), double(report.linearIterations()), double(summary.cutbacks)});
+    writeStep(next, {double(iterations), double(report.linearIterations()), double(summary.cutbacks)});
     if (console_)
-      *console_ << "  step " << summary.steps << " converged: t = " << time << ", " << iterations << " Newton / "
+      *console_ << "  step " << summary.steps << " converged: t = " << next << ", " << iterations << " Newton / "
                 << report.linearIterations() << " linear iterations, |f| = " << std::scientific << std::setprecision(2)
                 << report.iterations.back().residualNorm << std::defaultfloat << ", " << std::fixed
                 << std::setprecision(2) << seconds << " s" << std::defaultfloat
@@ -270,12 +305,6 @@ RunSummary Simulation::run() {
                         : std::string())
                 << "\n";
     if (contact_) reportContact(summary);
-    // Recover the nominal step after a cutback, but only once two steps in a
-    // row went through at the reduced size (else it fails again at once).
-    if (++successesSinceCutback >= 2) {
-      step = std::min(2 * step, nominalStep);
-      successesSinceCutback = 0;
-    }
   }
   solvers_->writer->finish();
   if (contact_ && console_)

@@ -97,6 +97,7 @@ private:
   Teuchos::RCP<Vector> reactions_;
   Teuchos::RCP<Vector> saddlePointState_;  ///< contact saddle-point form: converged (u, z)
   std::vector<std::string> reactionSets_;  ///< node sets whose reaction totals are written
+  std::vector<double> loadKnots_;          ///< times where a load function's slope changes
 };
 
 }  // namespace coulomb::solver

@@ -1,0 +1,112 @@
+#!/usr/bin/python3
+"""Check of tests/zoo/pressed_torsion_3d.xml: a pressed cylinder twisted into gross slip, mu = 0.3.
+
+    /usr/bin/python3 tests/zoo/pressed_torsion_3d_check.py RESULT.e
+
+Last written step (the deck's comment gives the derivation and tolerances):
+  value     T = |sum over `top` of x R_y - y R_x| (torque of the reactions)
+  expected  mu sum_j p_j r_j A_j over the slave nodes (contact_pressure p_j,
+            r_j the distance to the z axis, A_j = integral of the node's
+            bilinear shape function over the slave faces)   tolerance 1e-3
+  condition T against Lubkin on the meshed disc, mu P int(r dA) / A
+            (P = -reaction_top_z, = (2/3) mu P a on the exact disc), 1.5 %
+Extras: T / ((2/3) mu P a), the torque of the tangential tractions, sum p_j A_j
+against P, contact state counts, and the expected T only when the run reached
+the deck's final time (earlier steps are not in gross slip).
+"""
+import math
+import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.dont_write_bytecode = True
+import zoo_exodus as zx  # noqa: E402
+
+CASE = "pressed_torsion_3d"
+MU = 0.3
+A_RADIUS = 1.0
+FINAL_TIME = 12.0
+TOL_CONSERVATION = 1e-3
+TOL_LUBKIN = 0.015
+HEX_FACES = ((0, 1, 5, 4), (1, 2, 6, 5), (2, 3, 7, 6), (0, 4, 7, 3), (0, 3, 2, 1), (4, 5, 6, 7))
+G4 = [(-0.8611363115940526, 0.3478548451374538), (-0.3399810435848563, 0.6521451548625461),
+      (0.3399810435848563, 0.6521451548625461), (0.8611363115940526, 0.3478548451374538)]
+
+
+def slave_faces(path, nodes):
+    """quadrilateral faces (0-based node indices) of the HEX8 cells whose four nodes are all in `nodes`"""
+    import numpy as np
+    from netCDF4 import Dataset
+    inside = set(int(i) for i in nodes)
+    faces = []
+    with Dataset(path) as ds:
+        ds.set_auto_mask(False)
+        for name in ds.variables:
+            if not name.startswith("connect"):
+                continue
+            conn = np.array(ds.variables[name][:], dtype=int) - 1
+            for cell in conn:
+                for f in HEX_FACES:
+                    face = [int(cell[k]) for k in f]
+                    if all(v in inside for v in face):
+                        faces.append(face)
+    return faces
+
+
+def face_integrals(xyz, faces):
+    """A_j = int N_j dA per node, and int dA, int r dA over the faces (4 x 4 Gauss, bilinear map)"""
+    import numpy as np
+    area = {}
+    total, moment = 0.0, 0.0
+    for face in faces:
+        x = xyz[face]
+        for xi, wx in G4:
+            for eta, wy in G4:
+                N = 0.25 * np.array([(1 - xi) * (1 - eta), (1 + xi) * (1 - eta), (1 + xi) * (1 + eta), (1 - xi) * (1 + eta)])
+                dxi = 0.25 * np.array([-(1 - eta), (1 - eta), (1 + eta), -(1 + eta)])
+                deta = 0.25 * np.array([-(1 - xi), -(1 + xi), (1 + xi), (1 - xi)])
+                J = np.linalg.norm(np.cross(dxi @ x, deta @ x)) * wx * wy
+                p = N @ x
+                total += J
+                moment += J * math.hypot(p[0], p[1])
+                for k, v in enumerate(face):
+                    area[v] = area.get(v, 0.0) + N[k] * J
+    return area, total, moment
+
+
+r = zx.open_result(CASE, sys.argv)
+try:
+    X = r.coords
+    top = r.node_set("top")
+    slave = r.node_set("slave")
+    Rx, Ry = r.nodal("reaction_x"), r.nodal("reaction_y")
+    P = -r.glob_last("reaction_top_z")
+    p = r.nodal("contact_pressure")
+    state = r.nodal("contact_state")
+    tx, ty = r.nodal("contact_tangential_traction_x"), r.nodal("contact_tangential_traction_y")
+except KeyError as e:
+    zx.fail_read(CASE, str(e))
+faces = slave_faces(r.path, slave)
+if not faces:
+    zx.fail_read(CASE, "no slave faces found in the connectivity")
+A, area, moment = face_integrals(X, faces)
+
+T = abs(sum(X[i, 0] * Ry[i] - X[i, 1] * Rx[i] for i in top))
+T_friction = MU * sum(p[j] * math.hypot(X[j, 0], X[j, 1]) * A[j] for j in slave)
+T_traction = abs(sum(A[j] * (X[j, 0] * ty[j] - X[j, 1] * tx[j]) for j in slave))
+P_contact = sum(p[j] * A[j] for j in slave)
+lubkin_mesh = MU * P * moment / area
+lubkin_disc = 2.0 / 3.0 * MU * P * A_RADIUS
+active = [j for j in slave if state[j] > 0.5]
+slipping = sum(1 for j in active if state[j] < 1.5)
+lubkin_error = abs(T / lubkin_mesh - 1.0) if lubkin_mesh > 0 else float("inf")
+finished = abs(float(r.times[-1]) - FINAL_TIME) < 1e-9
+zx.report(CASE, "|torque of the top reactions| vs mu sum p_j r_j A_j (last step, gross slip)", T, T_friction,
+          TOL_CONSERVATION,
+          condition=(finished and lubkin_error <= TOL_LUBKIN,
+                     "final time reached and |T / (mu P int r dA / A) - 1| <= %g (Lubkin on the meshed disc)"
+                     % TOL_LUBKIN),
+          steps_written=r.steps, time=float(r.times[-1]), P=P, sum_p_A=P_contact, lubkin_mesh=lubkin_mesh,
+          lubkin_disc=lubkin_disc, T_over_lubkin_mesh=T / lubkin_mesh if lubkin_mesh else None,
+          T_over_lubkin_disc=T / lubkin_disc if lubkin_disc else None, torque_of_tangential_tractions=T_traction,
+          active_slave_nodes=len(active), slipping_slave_nodes=slipping, slave_nodes=len(slave))
