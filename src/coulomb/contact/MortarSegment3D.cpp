@@ -141,10 +141,11 @@ FacePoint<F, T> invertPlaneMap(const PlaneNodes<F, T>& pn, const Point2<T>& p) {
 }
 
 /// Index of the vertex of a projected quadrilateral where it is not convex
-/// (the turn there has the other sign than the polygon's orientation), or
-/// -1 when it is convex. A self-intersecting (bow-tie) projection has two
-/// turns of each sign: vertex 0 (either diagonal splits it into two
-/// triangles). Turns smaller than `areaTolerance` count as straight.
+/// (the turn there has the other sign than the polygon's orientation), -1
+/// when it is convex, -2 when it intersects itself (a bow-tie: two turns of
+/// each sign; the face is twisted so far that part of it faces away from the
+/// plane, and no split into triangles covers it once). Turns smaller than
+/// `areaTolerance` count as straight.
 template <typename T>
 int reflexVertex(const PlaneNodes<FaceType::Quad4, T>& p, double areaTolerance) {
   std::array<double, 4> turn{};
@@ -164,7 +165,7 @@ int reflexVertex(const PlaneNodes<FaceType::Quad4, T>& p, double areaTolerance) 
       if (first < 0) first = k;
     }
   if (against == 0) return -1;
-  return against == 1 ? first : 0;
+  return against == 1 ? first : -2;
 }
 
 }  // namespace
@@ -224,7 +225,7 @@ MortarSegment3D<S, Mf, T> integrateSegment3D(const FaceNodes<S, T>& xs, const Fa
   if (!(std::abs(valueOf(signedArea(masterPolygon))) > relativeTolerance * slaveArea)) return out;
 
   if constexpr (S == FaceType::Quad4)
-    COULOMB_REQUIRE(reflexVertex(ps, relativeTolerance * slaveArea) < 0,
+    COULOMB_REQUIRE(reflexVertex(ps, relativeTolerance * slaveArea) == -1,
                     "mortar integration: a slave Quad4 face is not convex on its auxiliary plane (distorted element)");
 
   // Master pieces: the face itself, or — a Quad4 whose projection is not
@@ -242,6 +243,22 @@ MortarSegment3D<S, Mf, T> integrateSegment3D(const FaceNodes<S, T>& xs, const Fa
   pieces[0] = {nM, {0, 1, 2, 3}};
   if constexpr (Mf == FaceType::Quad4) {
     const int reflex = reflexVertex(pm, relativeTolerance * slaveArea);
+    if (reflex == -2) {
+      // A bow-tie that does not reach the slave face is no contact; one that
+      // does is a geometry failure of this iterate (the step is cut back).
+      bool overlaps = false;
+      for (int first : {0, 2}) {
+        Polygon2<T> half;
+        for (int a = 0; a < 3; ++a) half.push(pm[(first + a) % 4]);
+        if (!(std::abs(valueOf(signedArea(half))) > relativeTolerance * slaveArea)) continue;
+        makeCounterClockwise(half);
+        const Polygon2<T> part = clipConvexPolygon(half, slavePolygon, relativeTolerance * std::sqrt(slaveArea));
+        overlaps = overlaps || (part.size >= 3 && valueOf(signedArea(part)) > relativeTolerance * slaveArea);
+      }
+      if (!overlaps) return out;
+      COULOMB_REQUIRE(false, "mortar integration: a master Quad4 face is twisted over itself when projected onto a "
+                             "slave face's auxiliary plane (a bow-tie)");
+    }
     if (reflex >= 0) {
       numPieces = 2;
       pieces[0] = {3, {reflex, (reflex + 1) % 4, (reflex + 2) % 4, -1}};
