@@ -258,9 +258,11 @@ RunSummary Simulation::run() {
       }
       COULOMB_REQUIRE(steps.reject(),
                       "Newton did not converge at t = " << next << " (deck step " << steps.nominalStep() << " of "
-                          << settings_.numberOfSteps << ") with dt = " << next - time << " after "
-                          << steps.consecutiveCutbacks() << " cutbacks ('Load Stepping/Maximum Cutbacks' = "
-                          << settings_.maximumCutbacks << ")"
+                          << settings_.numberOfSteps << ") with dt = " << next - time
+                          << (steps.consecutiveCutbacks() >= settings_.maximumCutbacks
+                                  ? " after " + std::to_string(steps.consecutiveCutbacks()) + " cutbacks in a row"
+                                  : std::string(", the smallest step (Final Time / Number of Steps / 2^cutbacks)"))
+                          << " ('Load Stepping/Maximum Cutbacks' = " << settings_.maximumCutbacks << ")"
                           << (rejected.empty() ? std::string() : "; an iterate was rejected: " + rejected)
                           << "; the result file keeps the converged steps up to t = " << time << " as "
                           << ResultWriter::partialPath(settings_.outputFile));
