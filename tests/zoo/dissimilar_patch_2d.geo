@@ -7,7 +7,7 @@
 // Sets: `bottom` (y = 0), `master` (base top), `slave` (punch bottom), `top`
 // (y = 1), and the sides of each body: `base_left`, `base_right`, `punch_left`,
 // `punch_right` (x = 0 and x = 1).
-// Make with: COULOMB_BUILD_DIR=/tmp/coulomb-baseline scripts/make_mesh \
+// Make with: scripts/make_mesh \
 //   tests/zoo/dissimilar_patch_2d.geo tests/zoo/meshes/dissimilar_patch_2d.e -setnumber n 7
 Geometry.AutoCoherence = 0;
 DefineConstant[ n = {7, Min 1, Name "n: base elements along x"} ];

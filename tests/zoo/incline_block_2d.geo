@@ -6,7 +6,7 @@
 // ((7n+1) x n QUAD4: a coarser, non-matching interface), two separate meshes.
 // Sets: `slave` (block bottom, y = 0), `master` (base top, y = 0), `back` (the
 // block's face x = 0, the pusher), `bottom` (base, y = -10).
-// Make with: COULOMB_BUILD_DIR=/tmp/coulomb-baseline scripts/make_mesh \
+// Make with: scripts/make_mesh \
 //   tests/zoo/incline_block_2d.geo tests/zoo/meshes/incline_block_2d_mu02.e -setnumber n 6
 Geometry.AutoCoherence = 0;
 DefineConstant[ n = {4, Min 1, Name "n: resolution (block 8n x 2n)"} ];

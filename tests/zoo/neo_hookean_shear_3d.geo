@@ -5,7 +5,7 @@
 // down, so that gmsh does not merge its bottom with the base's top.
 // Sets: `slave` (block bottom, z = 0), `master` (base top, z = 0), `top` (block
 // top, z = 5), `bottom` (base, z = -5).
-// Make with: COULOMB_BUILD_DIR=/tmp/coulomb-baseline scripts/make_mesh \
+// Make with: scripts/make_mesh \
 //   tests/zoo/neo_hookean_shear_3d.geo tests/zoo/meshes/neo_hookean_shear_3d.e -setnumber n 4
 DefineConstant[ n = {4, Min 1, Name "n: resolution (block 2n x 2n x n)"} ];
 

@@ -5,7 +5,7 @@
 // element size; not matching it), growing to 4 mm at the far corners. Two separate meshes.
 // Sets: `slave` (punch bottom, y = 0), `master` (block top, y = 0), `top` (punch
 // top, y = 5), `bottom` (block, y = -20).
-// Make with: COULOMB_BUILD_DIR=/tmp/coulomb-baseline scripts/make_mesh \
+// Make with: scripts/make_mesh \
 //   tests/zoo/sharp_punch_2d.geo tests/zoo/meshes/sharp_punch_2d.e -setnumber n 4
 Geometry.AutoCoherence = 0;
 DefineConstant[ n = {4, Min 1, Name "n: resolution (punch 8n x 4n)"} ];

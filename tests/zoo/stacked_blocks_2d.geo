@@ -6,7 +6,7 @@
 // Sets: `bottom` (y = -10), `lower_master` (bottom block top, y = 0),
 // `lower_slave` (middle block bottom, y = 0), `upper_master` (middle block
 // top, y = 5), `upper_slave` (top block bottom, y = 5), `top` (y = 10).
-// Make with: COULOMB_BUILD_DIR=/tmp/coulomb-baseline scripts/make_mesh \
+// Make with: scripts/make_mesh \
 //   tests/zoo/stacked_blocks_2d.geo tests/zoo/meshes/stacked_blocks_2d.e -setnumber n 8
 Geometry.AutoCoherence = 0;
 DefineConstant[ n = {8, Min 1, Name "n: resolution (middle block 4n x n)"} ];

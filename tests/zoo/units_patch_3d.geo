@@ -7,7 +7,7 @@
 // gmsh does not merge its bottom with the base's top.
 // Sets: `bottom` (z = 0), `master` (base top), `slave` (punch bottom), `top`
 // (punch top, z = 10 scale).
-// Make with: COULOMB_BUILD_DIR=/tmp/coulomb-baseline scripts/make_mesh \
+// Make with: scripts/make_mesh \
 //   tests/zoo/units_patch_3d.geo tests/zoo/meshes/units_patch_3d_m.e -setnumber n 2 -setnumber scale 0.001
 DefineConstant[ n = {2, Min 1, Name "n: resolution (punch 4n x 4n x 2n)"} ];
 DefineConstant[ scale = {1, Name "scale: length unit factor (1 mm, 0.001 m)"} ];
