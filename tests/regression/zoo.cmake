@@ -15,3 +15,15 @@ foreach(spec ${COULOMB_ZOO_CASES})
                          RESOURCE_LOCK zoo_mesh_${name})
   endforeach()
 endforeach()
+
+# One problem in three unit systems (mm/N/MPa, m/N/Pa, mm/kN/GPa) converges in
+# the same Newton iterations: part of the default suite (about 3 x 7 s).
+set(COULOMB_UNITS_CASES units_patch_3d_mm,units_patch_3d_m,units_patch_3d_kN)
+add_test(NAME Units.run
+         COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/tests/zoo/run_zoo.py --exe ${COULOMB_EXE} --np 1
+                 --cases ${COULOMB_UNITS_CASES} --out ${CMAKE_CURRENT_BINARY_DIR}/units)
+add_test(NAME Units.same_iterations
+         COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/tests/zoo/same_iterations.py
+                 ${CMAKE_CURRENT_BINARY_DIR}/units/zoo.jsonl units_patch_3d_mm units_patch_3d_m units_patch_3d_kN)
+set_tests_properties(Units.run PROPERTIES TIMEOUT 600 FIXTURES_SETUP units RESOURCE_LOCK zoo_mesh_units)
+set_tests_properties(Units.same_iterations PROPERTIES FIXTURES_REQUIRED units)
