@@ -303,3 +303,177 @@ TEST(FrictionalNode, RejectsBadInput) {
   EXPECT_THROW(frictionalState<2>(in, kSlip, p), coulomb::Error);
   EXPECT_THROW(frictionalRows<2>(in, ContactState::Inactive, coulombParameters(0.3)), coulomb::Error);
 }
+
+// A slipping node whose iterate slid against the direction its slip rows
+// gave it, by more than the hysteresis: the rule (4.75) alone would slip it
+// the other way (and the next iterate back: the 2-cycle of
+// tests/zoo/sharp_punch_2d); it sticks instead (FrictionalNode.cpp,
+// slipReversed). Slipping on along the direction, or without a direction
+// to compare with, is (4.75) unchanged.
+TEST(FrictionalNode, SlipAgainstItsDirectionSticks) {
+  const auto p = coulombParameters(0.3);  // k 2, eps_tau 5, t 1.5, alpha 0.7
+  FrictionalNodeInput<2> in;
+  in.normal = {0.0, -1.0};
+  in.D = 0.5;
+  in.gap = 0.0;
+  // Pressure 10 (Θ = 3), traction -3 along x on the slave: the slip rows' d = -x.
+  const double tD = p.thickness * in.D;
+  in.residual = {tD * -3.0, tD * 10.0};
+  in.previousDirection = {-1.0, 0.0};
+  in.slip = {2.0, 0.0};  // lambdā_tau = -3 + 0.7 × 5 × 2 / 0.5 = 11 > 0.98 Θ, against d
+  const auto reversed = frictionalState<2>(in, kSlip, p);
+  EXPECT_NEAR(reversed.threshold, 3.0, 1e-12);
+  EXPECT_NEAR(reversed.tangentNorm, 11.0, 1e-12);
+  EXPECT_EQ(reversed.state, ContactState::Stick);
+  auto along = in;  // slid along d: lambdā_tau = -3 - 14
+  along.slip = {-2.0, 0.0};
+  EXPECT_EQ(frictionalState<2>(along, kSlip, p).state, kSlip);
+  auto unknown = in;  // no direction of the last iterate: the rule alone
+  unknown.previousDirection = {};
+  EXPECT_EQ(frictionalState<2>(unknown, kSlip, p).state, kSlip);
+  // A sticking node with the same values slips (|lambdā_tau| = |-3 + 5 × 2 / 0.5| = 17 > Θ).
+  EXPECT_EQ(frictionalState<2>(in, ContactState::Stick, p).state, kSlip);
+  // A direction fixed for the step (Slip Reset Frequency < 0: the last
+  // step's slip) does not flip with lambdā_tau: the rule (4.75) alone; with
+  // no last slip the direction is lambdā_tau's again.
+  auto fixedDirection = p;
+  fixedDirection.slipDirectionFromSlip = true;
+  auto lastStep = in;
+  lastStep.lastSlip = {-0.01, 0.0};
+  EXPECT_EQ(frictionalState<2>(lastStep, kSlip, fixedDirection).state, kSlip);
+  lastStep.lastSlip = {};
+  EXPECT_EQ(frictionalState<2>(lastStep, kSlip, fixedDirection).state, ContactState::Stick);
+  // The direction the slip rows use, the unit lambdā_tau (world components).
+  const auto rows = frictionalRows<2>(along, kSlip, p);
+  EXPECT_NEAR(rows.direction[0], -1.0, 1e-14);
+  EXPECT_NEAR(rows.direction[1], 0.0, 1e-14);
+  EXPECT_EQ(frictionalRows<2>(along, ContactState::Stick, p).direction[0], 0.0);
+
+  // 3D: lambdā_tau turned by more than 90 degrees from d sticks, by less slips on.
+  FrictionalNodeInput<3> node;
+  node.normal = {0.0, 0.0, -1.0};
+  node.D = 0.5;
+  node.residual = {tD * -3.0, 0.0, tD * 10.0};
+  node.previousDirection = {-1.0, 0.0, 0.0};
+  const double c120 = std::cos(2.0944), s120 = std::sin(2.0944), c60 = 0.5, s60 = std::sqrt(0.75);
+  const double length = 3.0;  // alpha eps_tau |w| / D = 7 |w|: |w| = 3 dominates the -3 of k beta
+  node.slip = {-length * c120, length * s120, 0.0};  // 120 degrees from d = -x
+  EXPECT_EQ(frictionalState<3>(node, kSlip, p).state, ContactState::Stick);
+  node.slip = {-length * c60, length * s60, 0.0};  // 60 degrees
+  EXPECT_EQ(frictionalState<3>(node, kSlip, p).state, kSlip);
+}
+
+namespace {
+
+/// A node of the prescribed tangential DoF type: component x prescribed and
+/// driven (a pusher), n tilted slightly so that the driven direction u has a
+/// component in the free row (the coupling of Θ with lambda_n).
+template <int dim>
+FrictionalNodeInput<dim> drivenNode() {
+  FrictionalNodeInput<dim> in;
+  if constexpr (dim == 2) {
+    in.normal = unit<2>({0.002, -1.0});
+    in.oldTraction = {0.4, 3.0};
+  } else {
+    in.normal = unit<3>({0.002, -0.001, -1.0});
+    in.oldTraction = {0.4, -0.2, 3.0};
+  }
+  in.prescribed[0] = in.driven[0] = true;
+  in.D = 0.4;
+  in.gap = 0.0;
+  return in;
+}
+
+}  // namespace
+
+// A slave node whose tangential DoF is prescribed (the corner of a pushed
+// block, tests/zoo/incline_block_2d) keeps its friction: no free row sees
+// that direction, so its traction is explicit (FrictionalNode.hpp, driven
+// directions): in slip exactly Θ = mu p along the slip, in stick the return
+// map's trial u.t_old + eps_tau u.w / D. Checked on constructed states, and
+// the derivatives against central differences.
+TEST(FrictionalNode, PrescribedTangentialDofCarriesItsFriction) {
+  const double mu = 0.4;
+  const auto p = coulombParameters(mu);
+  const double pressure = 5.0;
+  // 2D: the tangent t ⟂ n closest to +x (the driven direction), the master
+  // slides along +t relative to the slave (seed sign), so the traction on the
+  // slave is -p n + mu p t and the free row (y) is in equilibrium with it.
+  auto in = drivenNode<2>();
+  const std::array<double, 2> t2{-in.normal[1], in.normal[0]};  // (1, 0.002)/|.|
+  std::array<double, 2> traction{};
+  for (int c = 0; c < 2; ++c) {
+    traction[c] = -pressure * in.normal[c] + mu * pressure * t2[c];
+    in.slip[c] = 0.5 * t2[c];  // trial 0.4 + eps_tau 0.5 / D = 6.7 > Θ = 2: beyond the penalty's elastic slip
+  }
+  in.residual = {0.0, p.thickness * in.D * traction[1]};  // x is prescribed: no row
+  const auto slip = frictionalRows<2>(in, kSlip, p);
+  ASSERT_TRUE(slip.usable);
+  for (int c = 0; c < 2; ++c) EXPECT_NEAR(p.k * slip.lambda[c], traction[c], 1e-12 * pressure) << c;
+  for (int c = 0; c < 2; ++c) EXPECT_NEAR(slip.rows[c], 0.0, 1e-12) << c;  // the gap row (g~ = 0); x has none
+  EXPECT_NEAR(slip.direction[0], t2[0], 1e-14);
+  const auto decided = frictionalState<2>(in, kSlip, p);
+  EXPECT_EQ(decided.state, kSlip);
+  EXPECT_NEAR(decided.threshold, mu * pressure, 1e-12 * pressure);
+  EXPECT_NEAR(decided.lambdaN * p.k, -pressure, 1e-12 * pressure);
+  // Stick: the trial, u.t_old + eps_tau u.w / D = 0.53, inside the cone.
+  auto stick = in;
+  for (int c = 0; c < 2; ++c) stick.slip[c] = 0.01 * t2[c];
+  double trial = 0;
+  for (int c = 0; c < 2; ++c) trial += t2[c] * stick.oldTraction[c] + p.epsTau * t2[c] * stick.slip[c] / stick.D;
+  const auto stuck = frictionalRows<2>(stick, ContactState::Stick, p);
+  double along = 0, normal = 0;
+  for (int c = 0; c < 2; ++c) along += p.k * stuck.lambda[c] * t2[c], normal += p.k * stuck.lambda[c] * in.normal[c];
+  EXPECT_NEAR(along, trial, 1e-12);
+  // ... with the free row in equilibrium: k t D lambda_y = r_y.
+  EXPECT_NEAR(p.k * p.thickness * in.D * stuck.lambda[1], stick.residual[1], 1e-12);
+  EXPECT_LT(std::abs(trial), mu * -normal);
+  EXPECT_EQ(frictionalState<2>(stick, ContactState::Stick, p).state, ContactState::Stick);
+  // A prescribed component that is not driven (a symmetry plane) carries no
+  // friction: the multiplier lies along n.
+  auto plane = in;
+  plane.driven = {};
+  const auto none = frictionalRows<2>(plane, kSlip, p);
+  EXPECT_NEAR(none.lambda[0] * in.normal[1] - none.lambda[1] * in.normal[0], 0.0, 1e-14);
+
+  // 3D, x prescribed (one driven direction, one tangent slot y): sliding
+  // along the slope t = (x - (n.x) n)/|.| carries mu p along t.
+  auto in3 = drivenNode<3>();
+  std::array<double, 3> t3{1.0, 0.0, 0.0};
+  const double nx = in3.normal[0];
+  for (int c = 0; c < 3; ++c) t3[c] -= nx * in3.normal[c];
+  t3 = unit<3>(t3);
+  std::array<double, 3> traction3{};
+  for (int c = 0; c < 3; ++c) {
+    traction3[c] = -pressure * in3.normal[c] + mu * pressure * t3[c];
+    in3.slip[c] = 0.5 * t3[c];
+    in3.residual[c] = c == 0 ? 0.0 : p.thickness * in3.D * traction3[c];
+  }
+  in3.oldTraction = traction3;  // the last step slid the same way (the trial along t: d = t exactly)
+  const auto slip3 = frictionalRows<3>(in3, kSlip, p);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(p.k * slip3.lambda[c], traction3[c], 1e-12 * pressure) << c;
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(slip3.rows[c], 0.0, 1e-12) << c;
+  EXPECT_EQ(frictionalState<3>(in3, kSlip, p).state, kSlip);
+
+  // Derivatives (Sacado) against central differences: stick and slip, 2D
+  // and 3D, one or two driven components, a driven one beside a symmetry plane.
+  for (ContactState state : {ContactState::Stick, kSlip}) {
+    auto node2 = genericNode<2>();
+    node2.prescribed[0] = node2.driven[0] = true;
+    node2.oldTraction = {0.3, -0.1};
+    checkDerivatives<2>(node2, state, p);
+    auto node3 = genericNode<3>();
+    node3.prescribed[0] = node3.driven[0] = true;
+    node3.oldTraction = {0.3, 0.2, -0.1};
+    checkDerivatives<3>(node3, state, p);
+    node3.prescribed[1] = node3.driven[1] = true;
+    checkDerivatives<3>(node3, state, p);
+    node3.driven[1] = false;
+    checkDerivatives<3>(node3, state, p);
+  }
+  auto tresca = p;
+  tresca.law = FrictionLaw{FrictionLawType::Tresca, 0.0, 1.3};
+  auto node3 = genericNode<3>();
+  node3.prescribed[0] = node3.driven[0] = true;
+  checkDerivatives<3>(node3, kSlip, tresca);
+}

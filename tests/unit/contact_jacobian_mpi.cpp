@@ -11,6 +11,10 @@
 //    the bulk residual, normals, slip, D and g~ (FrictionalNode.hpp) and J is
 //    their exact derivative (stick and slip sets frozen), anywhere: checked
 //    at the converged state and at a perturbed one.
+//    Also with slave nodes whose tangential DoF is prescribed (driven
+//    directions: their explicit traction reaches the master rows through w,
+//    D, g~ and n), on the frictional patch tests with the punch's edge
+//    x = 0 prescribed.
 //  - The saddle-point form (multipliers as unknowns): the whole tangent,
 //    multiplier rows and columns included, anywhere.
 #include <gtest/gtest.h>
@@ -18,6 +22,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include <Tpetra_CrsMatrix.hpp>
@@ -28,6 +33,8 @@
 #include "coulomb/contact/ContactModel.hpp"
 #include "coulomb/fem/Assembler.hpp"
 #include "coulomb/fem/DofMap.hpp"
+#include "coulomb/io/ExodusReader.hpp"
+#include "coulomb/io/ExodusWriter.hpp"
 
 namespace coulomb::test {
 namespace {
@@ -202,7 +209,68 @@ void expectSaddlePointTangentMatchesDifferences(const std::string& deck, const s
   EXPECT_LT(saddlePointDirectionalError(*simulation, 1e-3), 1e-6);
 }
 
+/// xml/friction_patch_2d.xml (3D: friction_patch_3d.xml) on a distorted
+/// copy of its mesh, with the punch's face x = 0 (node set punch_left; made
+/// here in 3D) prescribed in x like its top: its slave nodes slip with a
+/// driven direction.
+std::unique_ptr<solver::Simulation> solvePrescribedEdge(int dim) {
+  const std::string dir = scratchDirectory("contact_jacobian_prescribed_edge_" + std::to_string(dim) + "d");
+  const std::string mesh = dim == 2 ? "contact_patch2d.e" : "contact_patch3d.e";
+  std::string source = shippedMesh(mesh);
+  if (dim == 3) {
+    source = dir + "/with_punch_left.e";
+    if (worldComm()->getRank() == 0) {
+      mesh::GlobalMesh m = io::readExodus(shippedMesh(mesh));
+      std::set<long long> punch;
+      for (const auto& block : m.blocks)
+        if (block.name == "punch") punch.insert(block.connectivity.begin(), block.connectivity.end());
+      mesh::NodeSet set;
+      set.name = "punch_left";
+      set.id = 100;
+      for (long long n : punch)
+        if (std::abs(m.coordinates[3 * n]) < 1e-12) set.nodes.push_back(n);
+      m.nodeSets.push_back(set);
+      io::ExodusWriter writer(source, m, {}, {}, "3D patch with the punch's face x = 0 as a node set");
+      writer.close();
+    }
+    worldComm()->barrier();
+  }
+  writeDistortedCopy(source, dir + "/mesh.e", 0.15);
+  const std::string deck = dim == 2 ? "friction_patch_2d" : "friction_patch_3d";
+  std::string text = readFile(std::string(COULOMB_SOURCE_DIR) + "/xml/" + deck + ".xml");
+  text = replaceAll(text, "../exodus_meshes/" + mesh, "mesh.e");
+  const std::string coefficients = dim == 2 ? "{0.004285714285714286, 0.008571428571428572}"
+                                            : "{0.003, 0.0, 0.0078000000000000005}";
+  text = replaceAll(text, "<ParameterList name=\"top y\">",
+                    "<ParameterList name=\"punch left x\"><Parameter name=\"Node Set\" type=\"string\" "
+                    "value=\"punch_left\"/><Parameter name=\"Component\" type=\"string\" value=\"x\"/>"
+                    "<Parameter name=\"Value\" type=\"double\" value=\"0.002\"/><Parameter name=\"Linear "
+                    "Coefficients\" type=\"Array(double)\" value=\"" + coefficients + "\"/></ParameterList>"
+                    "<ParameterList name=\"top y\">");
+  writeOnRoot(dir + "/deck.xml", text);
+  auto simulation = std::make_unique<solver::Simulation>(dir + "/deck.xml", worldComm(), nullptr, dir + "/out.e");
+  simulation->run();
+  return simulation;
+}
+
+void expectPrescribedEdgeTangentMatchesDifferences(int dim) {
+  auto simulation = solvePrescribedEdge(dim);
+  const auto& set = simulation->contact()->lastSummary().activeSet;
+  EXPECT_EQ(set.active, dim == 2 ? 8u : 25u);
+  EXPECT_EQ(set.stick, 0u);
+  EXPECT_LT(directionalError(*simulation), 1e-6);
+  EXPECT_LT(directionalError(*simulation, 1e-3), 1e-6);
+}
+
 }  // namespace
+
+TEST(ContactJacobian, CoulombPrescribedSlaveEdge2DMatchesFiniteDifferences) {
+  expectPrescribedEdgeTangentMatchesDifferences(2);
+}
+
+TEST(ContactJacobian, CoulombPrescribedSlaveEdge3DMatchesFiniteDifferences) {
+  expectPrescribedEdgeTangentMatchesDifferences(3);
+}
 
 TEST(ContactJacobian, SaddlePoint2DMatchesFiniteDifferences) {
   expectSaddlePointTangentMatchesDifferences("hertz2d", "hertz2d.e");

@@ -131,6 +131,12 @@ void ContactModel::condenseResidual(Vector& residual) const {
   linalg::addEntries(contributions_.constraintResidual, residual);
 }
 
+void ContactModel::subtractPrescribedForces(Vector& reactions) const {
+  std::vector<linalg::VectorEntry> negated = contributions_.prescribedForce;
+  for (auto& e : negated) e.value = -e.value;
+  linalg::addEntries(negated, reactions);
+}
+
 Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMatrix>& bulkTangent) const {
   COULOMB_REQUIRE(!saddlePoint(), "internal: condensedTangent in the saddle-point form");
   if (!contributes_) return bulkTangent;

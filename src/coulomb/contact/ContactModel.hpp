@@ -67,6 +67,14 @@ public:
   void update(const Vector& u, const Vector& bulkResidual, bool freezeSet = false);
   /// residual := T (residual - f_c) + g   (residual: the bulk residual of the same u).
   void condenseResidual(Vector& residual) const;
+  /// Collective: reactions -= the contact forces that the last update put on
+  /// prescribed DoFs (ContactContributions::prescribedForce). The bulk
+  /// reaction f_int - f_ext of a prescribed DoF of an interface node is the
+  /// support's force plus the contact force acting there (which the system
+  /// leaves out: those rows are u - u_bar); after this call it is the
+  /// support's force alone, e.g. a pusher's including the friction of its
+  /// slave nodes. Condensed and penalty forms; a no-op without such forces.
+  void subtractPrescribedForces(Vector& reactions) const;
   /// J = T (K + K_c) + G as a matrix that the next call may overwrite in place
   /// (same pattern: the values are replaced); K unchanged; K itself when no pair contributes.
   Teuchos::RCP<CrsMatrix> condensedTangent(const Teuchos::RCP<CrsMatrix>& bulkTangent) const;

@@ -128,6 +128,7 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
   pressure_.assign(owned, 0.0);
   traction_.assign(owned, {0.0, 0.0, 0.0});
   weightedSlip_ = slipIncrement_ = stepStartAccumulatedSlip_ = stepStartTraction_ = lastStepSlip_ = traction_;
+  slipDirection_ = stepStartSlipDirection_ = traction_;
   openedInStep_.assign(owned, 0);
   beginStep();
 }
@@ -158,6 +159,9 @@ void ContactPair::beginStep() {
   if (frictional() && n > 0 && steps_ % n == 0)
     for (auto& state : state_)
       if (state == kSlip) state = ContactState::Stick;
+  for (std::size_t i = 0; i < state_.size(); ++i)
+    if (state_[i] != kSlip) slipDirection_[i] = {0.0, 0.0, 0.0};
+  stepStartSlipDirection_ = slipDirection_;
   ++steps_;
   stepStartState_ = state_;
   stepStartLambdaN_ = lambdaN_;
@@ -172,6 +176,7 @@ void ContactPair::restoreStep() {
   mortar_ = stepStartMortar_;
   x_ = stepStartX_;
   traction_ = stepStartTraction_;
+  slipDirection_ = stepStartSlipDirection_;
   std::fill(openedInStep_.begin(), openedInStep_.end(), 0);
   --steps_;
   searched_ = false;
@@ -378,6 +383,12 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
     };
 
     if (alm) {
+      // Forces on prescribed DoFs (slave f_j = k t lambda_n D n, master -k t lambda_n M_jl n): the supports'.
+      for (int c = 0; c < dim_; ++c) {
+        if (isPrescribed(node, c)) out.prescribedForce.push_back({row(node, c), force[c]});
+        for (const auto& [master, Mjl] : entry->M)
+          if (isPrescribed(master, c)) out.prescribedForce.push_back({row(master, c), -k_ * t * lambdaN * Mjl * n[c]});
+      }
       // T - I on the slave rows: the gap slot is emptied, the b rows replace the others.
       out.transform.push_back({row(node, frame.gapSlot), row(node, frame.gapSlot), -1.0});
       for (int f = 0; f < frame.numFree; ++f) {
@@ -444,7 +455,10 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
       // Penalty (4.71a): residual -f, K_c = -df/dx through g~, n, D and M.
       auto penaltyRows = [&](long long target, const NodalForce<3>& f, const DerivativeRow* dM) {
         for (int c = 0; c < dim_; ++c) {
-          if (isPrescribed(target, c)) continue;
+          if (isPrescribed(target, c)) {
+            out.prescribedForce.push_back({row(target, c), t * f.f[c]});
+            continue;
+          }
           out.contactResidual.push_back({row(target, c), -t * f.f[c]});
           std::map<DofKey, double> values;
           addScaled(values, entry->dGap, -t * f.dGap[c]);

@@ -74,6 +74,10 @@ struct ContactContributions {
   std::vector<linalg::VectorEntry> constraintResidual;  ///< g
   std::vector<linalg::MatrixTriplet> contactStiffness;  ///< K_c
   std::vector<linalg::VectorEntry> contactResidual;     ///< -f_c (penalty pairs)
+  /// f_c on prescribed DoFs (interface nodes on a Dirichlet set): not in the
+  /// system (those rows are u - u_bar), carried by the support
+  /// (ContactModel::subtractPrescribedForces).
+  std::vector<linalg::VectorEntry> prescribedForce;
   SaddlePointContributions saddle;                      ///< ALM pairs, uncondensed form
   MultiplierBlock multipliers;  ///< System Form = Saddle Point (then transform etc. stay empty)
 };
@@ -215,6 +219,9 @@ private:
   /// The weighted slip of the last converged step (the slip direction of
   /// Slip Reset Frequency < 0); kept through a restoreStep().
   std::vector<std::array<double, 3>> lastStepSlip_;
+  /// The unit slip direction of each slipping node's rows at the last
+  /// iterate (FrictionalNodeInput::previousDirection), and at the step start.
+  std::vector<std::array<double, 3>> slipDirection_, stepStartSlipDirection_;
   bool restored_ = false;  ///< restoreStep() ran since the last beginStep()
 };
 

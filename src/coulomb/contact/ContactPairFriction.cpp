@@ -3,7 +3,10 @@
 /// of the step (seed 4.69b, or 4.65a), the active and stick/slip sets
 /// (4.73-4.77) and the condensed rows of FrictionalNode.hpp chained with the
 /// derivatives of the mortar quantities. docs/architecture.md, "Frictional
-/// contact", has the system.
+/// contact", has the system. Contact forces on prescribed DoFs (slave nodes
+/// on a Dirichlet set, with the friction of their driven directions, and
+/// masters) are listed apart (ContactContributions::prescribedForce): the
+/// supports carry them.
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -21,20 +24,28 @@ namespace coulomb::contact {
 
 namespace {
 
+/// What the kernel needs of a node besides r, n, w, D, g~ (3 wide).
+struct NodeExtras {
+  std::array<bool, 3> prescribed{}, driven{};
+  std::array<double, 3> oldTraction{}, lastSlip{}, previousDirection{};
+  bool reclosing = false;
+};
+
 /// The 3-wide input of the kernel's dimension.
 template <int dim>
 FrictionalNodeInput<dim> narrow(const std::array<double, 3>& r, const std::array<double, 3>& n,
-                                const std::array<double, 3>& w, double D, double gap,
-                                const std::array<bool, 3>& prescribed, bool reclosing = false,
-                                const std::array<double, 3>& lastSlip = {}) {
+                                const std::array<double, 3>& w, double D, double gap, const NodeExtras& x) {
   FrictionalNodeInput<dim> in;
-  in.reclosing = reclosing;
+  in.reclosing = x.reclosing;
   for (int c = 0; c < dim; ++c) {
-    in.lastSlip[c] = lastSlip[c];
+    in.lastSlip[c] = x.lastSlip[c];
     in.residual[c] = r[c];
     in.normal[c] = n[c];
     in.slip[c] = w[c];
-    in.prescribed[c] = prescribed[c];
+    in.prescribed[c] = x.prescribed[c];
+    in.driven[c] = x.driven[c];
+    in.oldTraction[c] = x.oldTraction[c];
+    in.previousDirection[c] = x.previousDirection[c];
   }
   in.D = D;
   in.gap = gap;
@@ -45,7 +56,7 @@ FrictionalNodeInput<dim> narrow(const std::array<double, 3>& r, const std::array
 /// (r 0-2, n 3-5, w 6-8, D 9, g~ 10).
 struct Rows {
   bool usable = false;
-  std::array<double, 3> rows{}, lambda{};
+  std::array<double, 3> rows{}, lambda{}, direction{};
   std::array<std::array<double, 11>, 3> dRows{}, dLambda{};
 };
 struct State {
@@ -62,6 +73,7 @@ Rows widenRows(const FrictionalNodeRows<dim>& k) {
   for (int c = 0; c < dim; ++c) {
     out.rows[c] = k.rows[c];
     out.lambda[c] = k.lambda[c];
+    out.direction[c] = k.direction[c];
     for (int i = 0; i < kFrictionalInputs<dim>; ++i) {
       out.dRows[c][input(i)] = k.dRows[c][i];
       out.dLambda[c][input(i)] = k.dLambda[c][i];
@@ -71,24 +83,22 @@ Rows widenRows(const FrictionalNodeRows<dim>& k) {
 }
 
 State decide(int dim, const std::array<double, 3>& r, const std::array<double, 3>& n, const std::array<double, 3>& w,
-             double D, double gap, const std::array<bool, 3>& prescribed, ContactState previous, bool reclosing,
-             const FrictionalParameters& p) {
+             double D, double gap, const NodeExtras& x, ContactState previous, const FrictionalParameters& p) {
   State out;
   auto copy = [&out](const auto& s, int d) {
     out.state = s.state;
     out.lambdaN = s.lambdaN;
     for (int c = 0; c < d; ++c) out.traction[c] = s.traction[c];
   };
-  if (dim == 2) copy(frictionalState<2>(narrow<2>(r, n, w, D, gap, prescribed, reclosing), previous, p), 2);
-  else copy(frictionalState<3>(narrow<3>(r, n, w, D, gap, prescribed, reclosing), previous, p), 3);
+  if (dim == 2) copy(frictionalState<2>(narrow<2>(r, n, w, D, gap, x), previous, p), 2);
+  else copy(frictionalState<3>(narrow<3>(r, n, w, D, gap, x), previous, p), 3);
   return out;
 }
 
 Rows rowsOf(int dim, const std::array<double, 3>& r, const std::array<double, 3>& n, const std::array<double, 3>& w,
-            double D, double gap, const std::array<bool, 3>& prescribed, ContactState state,
-            const FrictionalParameters& p, const std::array<double, 3>& lastSlip) {
-  if (dim == 2) return widenRows<2>(frictionalRows<2>(narrow<2>(r, n, w, D, gap, prescribed, false, lastSlip), state, p));
-  return widenRows<3>(frictionalRows<3>(narrow<3>(r, n, w, D, gap, prescribed, false, lastSlip), state, p));
+            double D, double gap, const NodeExtras& x, ContactState state, const FrictionalParameters& p) {
+  if (dim == 2) return widenRows<2>(frictionalRows<2>(narrow<2>(r, n, w, D, gap, x), state, p));
+  return widenRows<3>(frictionalRows<3>(narrow<3>(r, n, w, D, gap, x), state, p));
 }
 
 void addScaled(DerivativeRow& to, const DerivativeRow& from, double scale) {
@@ -206,6 +216,28 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
     return values;
   };
   auto prescribedOf = [&](long long node) { return prescribed_[interface_->interfaceNodeIndex(node)]; };
+  // The kernel's extras of owned node i with mortar entry `entry`. A
+  // prescribed component is driven (it moves the slave relative to the
+  // master, FrictionalNodeInput::driven) unless a master node coupled to the
+  // slave node has it prescribed too: then it is a plane both bodies share (a
+  // symmetry plane), across which nothing slides; the mortar slip there is
+  // one-sided (the node's support ends at the plane) and must not be read as
+  // a slip.
+  auto extrasOf = [&](std::size_t i, const NodalMortarEntry& entry) {
+    NodeExtras x;
+    x.prescribed = prescribedOf(entry.node);
+    for (int c = 0; c < dim_; ++c) {
+      if (!x.prescribed[c]) continue;
+      bool shared = false;
+      for (const auto& [master, Mjl] : entry.M) shared = shared || isPrescribed(master, c);
+      x.driven[c] = !shared;
+    }
+    x.oldTraction = stepStartTraction_[i];
+    x.lastSlip = lastStepSlip_[i];
+    x.previousDirection = slipDirection_[i];
+    x.reclosing = openedInStep_[i] != 0;
+    return x;
+  };
 
   // Stage 1: values, the new sets.
   PairIterationSummary summary;
@@ -220,8 +252,8 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
     if (entry != nullptr && entry->D > minimumD_) {
       const auto w = weightedSlip(*entry, nullptr);
       p.law.coefficient = settings_.frictionCoefficient(node);
-      decided = decide(dim_, residualAt(node), normals_[s].n, w, entry->D, entry->gap, prescribedOf(node), previous,
-                       openedInStep_[i] != 0, p);
+      decided =
+          decide(dim_, residualAt(node), normals_[s].n, w, entry->D, entry->gap, extrasOf(i, *entry), previous, p);
       weightedSlip_[i] = w;
       for (int c = 0; c < 3; ++c) slipIncrement_[i][c] = -w[c] / entry->D;  // the slave relative to the master
       state = nextState(decided.state, previous, updateSet, summary.violations);
@@ -232,6 +264,7 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
       }
     }
     settleState(i, state, previous, summary);
+    if (state != kSlip) slipDirection_[i] = {0.0, 0.0, 0.0};  // stage 2 sets it for the slipping ones
     lambdaN_[i] = decided.lambdaN;
     pressure_[i] = -k_ * decided.lambdaN;
     traction_[i] = decided.traction;
@@ -253,8 +286,11 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
     const auto w = weightedSlip(*entry, &dw);
     const auto rf = residualAt(node);
     p.law.coefficient = settings_.frictionCoefficient(node);
-    const Rows k = rowsOf(dim_, rf, n, w, entry->D, entry->gap, prescribedOf(node), state_[i], p, lastStepSlip_[i]);
+    NodeExtras extras = extrasOf(i, *entry);
+    extras.reclosing = false;
+    const Rows k = rowsOf(dim_, rf, n, w, entry->D, entry->gap, extras, state_[i], p);
     if (!k.usable) continue;
+    slipDirection_[i] = k.direction;
 
     // Forces and residual figures: the recovered traction acts on the slave.
     double tn = 0;
@@ -289,8 +325,12 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
     };
 
     // Slave rows: the bulk row is replaced (T - I = -1), the value goes to g.
+    // A prescribed component keeps its row; its force goes to the support.
     for (int c = 0; c < dim_; ++c) {
-      if (isPrescribed(node, c)) continue;
+      if (isPrescribed(node, c)) {
+        out.prescribedForce.push_back({dofRow(node, c), k_ * t * entry->D * k.lambda[c]});
+        continue;
+      }
       const GlobalOrdinal target = dofRow(node, c);
       out.transform.push_back({target, target, -1.0});
       out.constraintResidual.push_back({target, k.rows[c]});
@@ -318,16 +358,20 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
       (state_[i] == ContactState::Stick ? summary.stickResidual2 : summary.slipResidual2) += all2;
     }
     // Master rows: + k t M_jl lambda_j (the recovered force, acting on the master as -f).
+    // lambda depends on w and g~ only along driven directions (FrictionalNode.hpp).
     for (const auto& [master, Mjl] : entry->M)
       for (int c = 0; c < dim_; ++c) {
-        if (isPrescribed(master, c)) continue;
         const GlobalOrdinal target = dofRow(master, c);
         const double kt = k_ * t;
+        if (isPrescribed(master, c)) {
+          out.prescribedForce.push_back({target, -kt * Mjl * k.lambda[c]});
+          continue;
+        }
         out.constraintResidual.push_back({target, kt * Mjl * k.lambda[c]});
         for (int m = 0; m < dim_; ++m)
           if (!isPrescribed(node, m) && k.dLambda[c][m] != 0.0)
             out.tangentTransform.push_back({target, dofRow(node, m), kt * Mjl * k.dLambda[c][m]});
-        DerivativeRow row = explicitRow(k.dLambda[c], false);
+        DerivativeRow row = explicitRow(k.dLambda[c], true);
         for (auto& [key, value] : row) value *= Mjl;
         const auto dM = entry->dM.find(master);
         if (dM != entry->dM.end()) addScaled(row, dM->second, k.lambda[c]);
@@ -467,9 +511,14 @@ PairIterationSummary ContactPair::updatePenaltyFrictional(bool updateSet, Contac
       if (!isPrescribed(node, c)) {
         out.contactResidual.push_back({dofRow(node, c), -f.force[c]});
         emit(dofRow(node, c), df, -1.0);
+      } else {
+        out.prescribedForce.push_back({dofRow(node, c), f.force[c]});
       }
       for (const auto& [master, Mjl] : entry->M) {
-        if (isPrescribed(master, c)) continue;
+        if (isPrescribed(master, c)) {
+          out.prescribedForce.push_back({dofRow(master, c), -Mjl / D * f.force[c]});
+          continue;
+        }
         const GlobalOrdinal target = dofRow(master, c);
         out.contactResidual.push_back({target, Mjl / D * f.force[c]});
         DerivativeRow row = df;

@@ -28,16 +28,136 @@ struct NodeTerms {
   S lambdaN = 0.0;
   std::array<S, dim> beta{};      ///< by tangent slot (b_s.r_F / (k t D))
   std::array<S, dim> slip{};      ///< by tangent slot (b_s.w)
-  std::array<S, dim> lambda{};    ///< lambda_n n + sum beta_s b_s
+  std::array<S, dim> lambda{};    ///< lambda_n n + sum beta_s b_s + sum (tau_k / k) u_k
   S augmentedNormal = 0.0;
+  /// Driven tangent directions (FrictionalNodeInput::driven): unit u_k ⟂ n
+  /// and ⟂ every b_s, the first numDriven of u; along them the traction
+  /// tau_k is explicit, the trial of the return map (4.71a) when sticking,
+  /// Θ d_k when slipping.
+  int numDriven = 0;
+  std::array<std::array<S, dim>, dim> u{};
+  std::array<S, dim> trial{};  ///< u_k.t_old + eps_tau u_k.w / D
+  std::array<S, dim> tau{};    ///< traction along u_k
+  S threshold = 0.0;           ///< Θ of a driven slipping node (consistent with its tau)
 };
 
+/// |(vO, vU)|, and (vO, vU) / |.| into (unitO, unitU) unless the norm is zero
+/// (then they are left as they are). vO by tangent slot, vU by driven direction.
+template <int dim, class S>
+S normalize(const std::array<S, dim>& vO, const std::array<S, dim>& vU, int numDriven, std::array<S, dim>& unitO,
+            std::array<S, dim>& unitU) {
+  using std::sqrt;
+  S norm2 = 0.0;
+  for (int c = 0; c < dim; ++c) norm2 += vO[c] * vO[c];
+  for (int k = 0; k < numDriven; ++k) norm2 += vU[k] * vU[k];
+  if (valueOf(norm2) <= 0.0) return S(0.0);
+  const S norm = sqrt(norm2);
+  for (int c = 0; c < dim; ++c) unitO[c] = vO[c] / norm;
+  for (int k = 0; k < numDriven; ++k) unitU[k] = vU[k] / norm;
+  return norm;
+}
+
+/// |lambdā_tau| with the slip augmentation `alpha` on the frame's tangent
+/// slots (k beta_s + alpha eps_tau b_s.w / D) and the trial on the driven
+/// directions, and its unit direction (zero when the norm is zero).
+template <int dim, class S>
+S augmentedTangent(const NodeTerms<dim, S>& t, const S& D, double alpha, const FrictionalParameters& p,
+                   std::array<S, dim>& directionO, std::array<S, dim>& directionU) {
+  directionO = {};
+  directionU = {};
+  std::array<S, dim> v{};
+  for (int i = 0; i < t.frame.numFree; ++i) {
+    const int s = t.frame.free[i];
+    if (s != t.frame.gapSlot) v[s] = p.k * t.beta[s] + alpha * p.epsTau * t.slip[s] / D;
+  }
+  return normalize<dim, S>(v, t.trial, t.numDriven, directionO, directionU);
+}
+
+/// The unit direction of the tangential part of `slip` (a fixed vector) in
+/// the frame's tangent slots and the driven directions, written into the
+/// directions unless that part is zero.
+template <int dim, class S>
+void fixedDirection(const NodeTerms<dim, S>& t, const std::array<double, dim>& slip, std::array<S, dim>& directionO,
+                    std::array<S, dim>& directionU) {
+  std::array<S, dim> qO{}, qU{}, unitO{}, unitU{};
+  for (int i = 0; i < t.frame.numFree; ++i) {
+    const int s = t.frame.free[i];
+    if (s == t.frame.gapSlot) continue;
+    for (int c = 0; c < dim; ++c) qO[s] += t.frame.b[s][c] * slip[c];
+  }
+  for (int k = 0; k < t.numDriven; ++k)
+    for (int c = 0; c < dim; ++c) qU[k] += t.u[k][c] * slip[c];
+  if (valueOf(normalize<dim, S>(qO, qU, t.numDriven, unitO, unitU)) > 0.0) directionO = unitO, directionU = unitU;
+}
+
+/// The slip direction d of the slip rows: the augmented multiplier's with
+/// the slip augmentation, or (slipDirectionFromSlip) the last step's slip.
+template <int dim, class S>
+void slipDirection(const NodeTerms<dim, S>& t, const S& D, const FrictionalNodeInput<dim>& in,
+                   const FrictionalParameters& p, std::array<S, dim>& directionO, std::array<S, dim>& directionU) {
+  augmentedTangent<dim, S>(t, D, p.slipAugmentation, p, directionO, directionU);
+  if (p.slipDirectionFromSlip) fixedDirection<dim, S>(t, in.lastSlip, directionO, directionU);
+}
+
+/// Σ_s vO_s b_s + Σ_k vU_k u_k: a tangent vector in world components.
+template <int dim, class S>
+std::array<double, dim> worldVector(const NodeTerms<dim, S>& t, const std::array<S, dim>& vO,
+                                    const std::array<S, dim>& vU) {
+  std::array<double, dim> out{};
+  for (int i = 0; i < t.frame.numFree; ++i) {
+    const int s = t.frame.free[i];
+    if (s == t.frame.gapSlot) continue;
+    for (int c = 0; c < dim; ++c) out[c] += valueOf(vO[s]) * valueOf(t.frame.b[s][c]);
+  }
+  for (int k = 0; k < t.numDriven; ++k)
+    for (int c = 0; c < dim; ++c) out[c] += valueOf(vU[k]) * valueOf(t.u[k][c]);
+  return out;
+}
+
+/// The driven tangent directions of a node: each driven component's unit
+/// vector e_c, Gram-Schmidt against n/|n|, the b_s and the u's before it.
+/// (e_c is prescribed, so ⟂ every b_s already, and e_P with n and the b_s
+/// span the space: |v| >= the part of e_c off n, >= 0.2 for a usable frame.)
+template <int dim, class S>
+void drivenDirections(NodeTerms<dim, S>& t, const std::array<S, dim>& n, const std::array<bool, dim>& driven) {
+  using std::sqrt;
+  S n2 = 0.0;
+  for (int c = 0; c < dim; ++c) n2 += n[c] * n[c];
+  const S nNorm = sqrt(n2);
+  for (int e = 0; e < dim; ++e) {
+    if (!driven[e] || t.frame.numFree == dim) continue;
+    bool free = false;
+    for (int i = 0; i < t.frame.numFree; ++i) free = free || t.frame.free[i] == e;
+    if (free) continue;  // a free component is never driven
+    std::array<S, dim> v{};
+    v[e] = 1.0;
+    auto remove = [&v](const std::array<S, dim>& unit) {
+      S dot = 0.0;
+      for (int c = 0; c < dim; ++c) dot += v[c] * unit[c];
+      for (int c = 0; c < dim; ++c) v[c] -= dot * unit[c];
+    };
+    std::array<S, dim> nUnit{};
+    for (int c = 0; c < dim; ++c) nUnit[c] = n[c] / nNorm;
+    remove(nUnit);
+    for (int k = 0; k < t.numDriven; ++k) remove(t.u[k]);
+    S length2 = 0.0;
+    for (int c = 0; c < dim; ++c) length2 += v[c] * v[c];
+    if (valueOf(length2) < 1e-12) continue;
+    const S length = sqrt(length2);
+    for (int c = 0; c < dim; ++c) v[c] /= length;
+    t.u[t.numDriven++] = v;
+  }
+}
+
+/// The node's terms. `recover`: the multiplier is recovered from r (the node
+/// was active at the previous iterate); `state`: the law of the driven
+/// directions (Stick: the trial; Active = slip: Θ d).
 template <int dim, class S>
 NodeTerms<dim, S> nodeTerms(const std::array<S, dim>& r, const std::array<S, dim>& n, const std::array<S, dim>& w,
-                            const S& D, const S& gap, const std::array<bool, dim>& prescribed, bool recover,
-                            const FrictionalParameters& p) {
+                            const S& D, const S& gap, const FrictionalNodeInput<dim>& in, bool recover,
+                            ContactState state, const FrictionalParameters& p) {
   NodeTerms<dim, S> terms;
-  terms.frame = condensationFrame<dim, S>(n, prescribed);
+  terms.frame = condensationFrame<dim, S>(n, in.prescribed);
   const auto& f = terms.frame;
   if (!f.usable) return terms;
   const double kt = p.k * p.thickness;
@@ -46,7 +166,6 @@ NodeTerms<dim, S> nodeTerms(const std::array<S, dim>& r, const std::array<S, dim
     for (int i = 0; i < f.numFree; ++i) aR += f.a[f.free[i]] * r[f.free[i]];
     terms.lambdaN = aR / (kt * D * f.normFree);
   }
-  for (int c = 0; c < dim; ++c) terms.lambda[c] = terms.lambdaN * n[c];
   for (int i = 0; i < f.numFree; ++i) {
     const int s = f.free[i];
     if (s == f.gapSlot) continue;
@@ -57,56 +176,91 @@ NodeTerms<dim, S> nodeTerms(const std::array<S, dim>& r, const std::array<S, dim
     }
     terms.beta[s] = recover ? S(q / (kt * D)) : S(0.0);
     terms.slip[s] = ws;
-    for (int c = 0; c < dim; ++c) terms.lambda[c] += terms.beta[s] * f.b[s][c];
   }
   // MPC: the reaction of a tied node, the gap of an untied one (no augmentation).
-  terms.augmentedNormal = !p.multiPointConstraint ? S(p.k * terms.lambdaN + p.epsN * gap / D)
-                          : recover               ? S(p.k * terms.lambdaN)
-                                                  : S(p.epsN * gap / D);
+  auto augmented = [&](const S& lambdaN) -> S {
+    return !p.multiPointConstraint ? S(p.k * lambdaN + p.epsN * gap / D) : recover ? S(p.k * lambdaN)
+                                                                                 : S(p.epsN * gap / D);
+  };
+  drivenDirections<dim, S>(terms, n, in.driven);
+  if (terms.numDriven > 0) {
+    // The driven directions carry an explicit traction: no free row of the
+    // slave sees them (their components are prescribed), so the slave rows
+    // cannot recover it. But it acts on the master (k t M_jl lambda) and on
+    // the support of the prescribed DoF, and through n_F on the a-row:
+    //   a.r_F / (k t D) = lambda_n |n_F| + sum_k (tau_k / k) a.u_k,
+    // so lambda_n = lambda_n0 - sum_k (tau_k / k) a.u_k / |n_F|.
+    std::array<S, dim> aU{};
+    for (int k = 0; k < terms.numDriven; ++k) {
+      for (int c = 0; c < dim; ++c) {
+        terms.trial[k] += terms.u[k][c] * in.oldTraction[c] + p.epsTau * terms.u[k][c] * w[c] / D;
+        aU[k] += f.a[c] * terms.u[k][c];
+      }
+      aU[k] /= f.normFree;
+    }
+    if (state == kSlip) {
+      // tau_k = Θ d_k with Θ at lambdā_n = lambdā_n0 - Θ c, c = sum_k a.u_k d_k / |n_F|:
+      // Coulomb Θ = mu <-lambdā_n> gives Θ = Θ0 / (1 - mu c) (c ~ the normal's
+      // tilt into the driven directions, ~1e-4); Tresca's Θ is constant.
+      std::array<S, dim> directionO{}, directionU{};
+      slipDirection<dim, S>(terms, D, in, p, directionO, directionU);
+      S c = 0.0;
+      for (int k = 0; k < terms.numDriven; ++k) c += aU[k] * directionU[k];
+      const S theta0 = frictionThreshold(p.law, augmented(terms.lambdaN));
+      const double mu = p.law.coefficient;
+      const bool coupled =
+          p.law.type == FrictionLawType::Coulomb && valueOf(theta0) > 0.0 && 1.0 - mu * valueOf(c) >= 0.5;
+      terms.threshold = coupled ? S(theta0 / (1.0 - mu * c)) : theta0;
+      for (int k = 0; k < terms.numDriven; ++k) terms.tau[k] = terms.threshold * directionU[k];
+    } else {
+      for (int k = 0; k < terms.numDriven; ++k) terms.tau[k] = terms.trial[k];
+    }
+    if (recover)
+      for (int k = 0; k < terms.numDriven; ++k) terms.lambdaN -= terms.tau[k] * aU[k] / p.k;
+  }
+  for (int c = 0; c < dim; ++c) terms.lambda[c] = terms.lambdaN * n[c];
+  for (int i = 0; i < f.numFree; ++i) {
+    const int s = f.free[i];
+    if (s == f.gapSlot) continue;
+    for (int c = 0; c < dim; ++c) terms.lambda[c] += terms.beta[s] * f.b[s][c];
+  }
+  for (int k = 0; k < terms.numDriven; ++k)
+    for (int c = 0; c < dim; ++c) terms.lambda[c] += terms.tau[k] / p.k * terms.u[k][c];
+  terms.augmentedNormal = augmented(terms.lambdaN);
   return terms;
 }
 
-/// The vector with `component(s)` in the frame's tangent slots (free, not the gap's), zero elsewhere.
-template <int dim, class S, class Component>
-std::array<S, dim> tangential(const NodeTerms<dim, S>& t, Component component) {
-  std::array<S, dim> v{};
-  for (int i = 0; i < t.frame.numFree; ++i)
-    if (t.frame.free[i] != t.frame.gapSlot) v[t.frame.free[i]] = component(t.frame.free[i]);
-  return v;
-}
-
-/// |v|, and v / |v| into `unit` unless |v| is zero (then `unit` is left as it is).
-template <int dim, class S>
-S normalize(const std::array<S, dim>& v, std::array<S, dim>& unit) {
-  using std::sqrt;
-  S norm2 = 0.0;
-  for (int c = 0; c < dim; ++c) norm2 += v[c] * v[c];
-  if (valueOf(norm2) <= 0.0) return S(0.0);
-  const S norm = sqrt(norm2);
-  for (int c = 0; c < dim; ++c) unit[c] = v[c] / norm;
-  return norm;
-}
-
-/// |lambdā_tau| with the slip augmentation `alpha`, and the unit direction (zero when the norm is zero).
-template <int dim, class S>
-S augmentedTangent(const NodeTerms<dim, S>& t, const S& D, double alpha, const FrictionalParameters& p,
-                   std::array<S, dim>& direction) {
-  direction = {};
-  return normalize<dim, S>(
-      tangential(t, [&](int s) { return S(p.k * t.beta[s] + alpha * p.epsTau * t.slip[s] / D); }), direction);
-}
-
-/// The unit direction of the tangential part of `slip` (a fixed vector) in
-/// the frame's tangent slots, written into `direction` unless that part is zero.
-template <int dim, class S>
-void fixedDirection(const NodeTerms<dim, S>& t, const std::array<double, dim>& slip, std::array<S, dim>& direction) {
-  std::array<S, dim> unit{};
-  const auto q = tangential(t, [&](int s) {
-    S v = 0.0;
-    for (int c = 0; c < dim; ++c) v += t.frame.b[s][c] * slip[c];
-    return v;
-  });
-  if (valueOf(normalize<dim, S>(q, unit)) > 0.0) direction = unit;
+/// A slipping node whose iterate slid against the direction `previous` its
+/// slip rows gave it (w.d < 0) far enough that the rule (4.75-4.77) would
+/// reverse it (lambdā_tau.d < 0, `directionO/U` the unit lambdā_tau).
+///
+/// Why it is set to stick instead (the slip -> stick side of (4.75), beside
+/// the hysteresis of stickSlipState): its slip rows gave it the traction
+/// k beta = Θ d, and at a slip solution w is along d with a positive factor
+/// (4.79), so lambdā_tau = k beta + alpha eps_tau w / D points along d. This
+/// iterate slid against the friction force it carried, by more than
+/// |k beta| D / (alpha eps_tau): Θ d was more than the node needed. The rule
+/// alone reads |lambdā_tau| > (1 - slip threshold) Θ as "slip along -d" and
+/// gives it -Θ d, to which the node answers by sliding the other way: d
+/// flips at every iterate, the sets and the increment norm unchanged
+/// (tests/zoo/sharp_punch_2d and the pressing of sliding_cylinder_2d:
+/// |r_slip| alternating between two values until the step fails). The
+/// traction that holds it lies between +Θ d and -Θ d: stick (the stick guess
+/// of Algorithm 3 again), from where the stick test with the full
+/// augmentation (4.77) sends it to slip along its needed traction if the cone
+/// cannot hold it. In 2D the tangent is a line and d can only flip; in 3D
+/// this is a turn by more than 90 degrees in one iterate. (The flip itself
+/// was no state change for the convergence test; slip -> stick is one.)
+template <int dim>
+bool slipReversed(const NodeTerms<dim, double>& t, const std::array<double, dim>& directionO,
+                  const std::array<double, dim>& directionU, const FrictionalNodeInput<dim>& in) {
+  const auto augmented = worldVector<dim, double>(t, directionO, directionU);
+  double along = 0.0, slid = 0.0;
+  for (int c = 0; c < dim; ++c) {
+    along += augmented[c] * in.previousDirection[c];
+    slid += in.slip[c] * in.previousDirection[c];
+  }
+  return along < 0.0 && slid < 0.0;
 }
 
 void checkParameters(double D, const FrictionalParameters& p) {
@@ -122,8 +276,9 @@ FrictionalNodeState<dim> frictionalState(const FrictionalNodeInput<dim>& in, Con
                                          const FrictionalParameters& p) {
   checkParameters(in.D, p);
   FrictionalNodeState<dim> out;
-  const auto terms = nodeTerms<dim, double>(in.residual, in.normal, in.slip, in.D, in.gap, in.prescribed,
-                                            isActive(previous), p);
+  // The driven directions follow the law of the rows of the previous iterate.
+  const auto terms = nodeTerms<dim, double>(in.residual, in.normal, in.slip, in.D, in.gap, in,
+                                            isActive(previous), previous == kSlip ? kSlip : ContactState::Stick, p);
   if (!terms.frame.usable) return out;
   out.lambdaN = terms.lambdaN;
   out.augmentedNormal = terms.augmentedNormal;
@@ -133,19 +288,31 @@ FrictionalNodeState<dim> frictionalState(const FrictionalNodeInput<dim>& in, Con
   // (4.77): a stick node (or one that just closed) is tested with the full
   // augmentation (MPC: its reaction alone), a slipping one with the slip
   // augmentation alpha.
-  std::array<double, dim> direction{};
+  std::array<double, dim> directionO{}, directionU{};
   const double stickAugmentation = p.multiPointConstraint ? 0.0 : 1.0;
-  out.tangentNorm = augmentedTangent<dim, double>(terms, in.D, previous == kSlip ? p.slipAugmentation : stickAugmentation,
-                                                  p, direction);
+  out.tangentNorm = augmentedTangent<dim, double>(
+      terms, in.D, previous == kSlip ? p.slipAugmentation : stickAugmentation, p, directionO, directionU);
   // A node that just closed has no recovered traction: the stick guess
   // (Algorithm 3, line 6), deterministic whatever the round-off of its tiny
   // first threshold; one that closes again within the step is judged on its
   // augmented values (lambda = 0), from the stick side.
-  if (isActive(previous))
+  if (isActive(previous)) {
     out.state = stickSlipState(out.tangentNorm, out.threshold, previous, p.slipThreshold);
-  else
+    // A direction fixed for the step (the last step's slip, slipDirectionFromSlip)
+    // does not follow lambdā_tau: it cannot flip, and sliding against it on the
+    // way is no sign of a stick state.
+    bool fixed = false;
+    if (p.slipDirectionFromSlip) {
+      std::array<double, dim> o{}, u{};
+      fixedDirection<dim, double>(terms, in.lastSlip, o, u);
+      for (int c = 0; c < dim; ++c) fixed = fixed || o[c] != 0.0 || u[c] != 0.0;
+    }
+    if (previous == kSlip && out.state == kSlip && !fixed && slipReversed<dim>(terms, directionO, directionU, in))
+      out.state = ContactState::Stick;
+  } else {
     out.state = in.reclosing ? stickSlipState(out.tangentNorm, out.threshold, ContactState::Stick, p.slipThreshold)
                              : ContactState::Stick;
+  }
   return out;
 }
 
@@ -163,7 +330,7 @@ FrictionalNodeRows<dim> frictionalRows(const FrictionalNodeInput<dim>& in, Conta
     w[c] = Fad(N, 2 * dim + c, in.slip[c]);
   }
   const Fad D(N, 3 * dim, in.D), gap(N, 3 * dim + 1, in.gap);
-  const auto terms = nodeTerms<dim, Fad>(r, n, w, D, gap, in.prescribed, true, p);
+  const auto terms = nodeTerms<dim, Fad>(r, n, w, D, gap, in, true, state, p);
   FrictionalNodeRows<dim> out;
   out.usable = terms.frame.usable;
   if (!out.usable) return out;
@@ -171,12 +338,12 @@ FrictionalNodeRows<dim> frictionalRows(const FrictionalNodeInput<dim>& in, Conta
   const double t = p.thickness;
   std::array<Fad, dim> rows{};
   rows[f.gapSlot] = f.gapRowSign * p.epsN * t * gap;
-  std::array<Fad, dim> direction{};
+  std::array<Fad, dim> direction{}, directionU{};
   Fad threshold = 0.0;
   if (state == kSlip) {
-    augmentedTangent<dim, Fad>(terms, D, p.slipAugmentation, p, direction);
-    if (p.slipDirectionFromSlip) fixedDirection<dim, Fad>(terms, in.lastSlip, direction);
-    threshold = frictionThreshold(p.law, terms.augmentedNormal);
+    slipDirection<dim, Fad>(terms, D, in, p, direction, directionU);
+    threshold = terms.numDriven > 0 ? terms.threshold : frictionThreshold(p.law, terms.augmentedNormal);
+    out.direction = worldVector<dim, Fad>(terms, direction, directionU);
   }
   for (int i = 0; i < f.numFree; ++i) {
     const int s = f.free[i];

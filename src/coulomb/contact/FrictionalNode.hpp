@@ -29,6 +29,21 @@
 /// (= kappa eps_n) enters the stick/slip decision and the slip direction.
 /// The master rows receive the recovered force k t M_jl lambda (the caller).
 ///
+/// Driven directions (a slave node whose tangential DoF is prescribed, e.g.
+/// the corner of a pushed block that is also a slave node): the tangent
+/// directions u_k that no free row of the node sees (⟂ n and the b_s, from the
+/// driven components) cannot be condensed, since their multiplier would need
+/// a row of its own. Their traction tau_k is explicit, the return map of the
+/// penalty form (4.71a, the seed's ComputePenaltyFrictionalActiveSet) on the
+/// history of the step: trial tau*_k = u_k.t_old + eps_tau u_k.w / D (t_old the
+/// converged traction of the last step); stick tau = tau*, slip tau = Θ d_k
+/// with the node's one slip direction d over the b_s and u_k, and the cone
+/// test on |(lambdā_tau on the b_s, tau*)|. In gross slip this is exactly
+/// Θ d, the Coulomb traction; in stick it is the regularised stick of a
+/// penalty (the slip of the node stays ~ its traction / eps_tau). The force
+/// k t D tau u acts on the prescribed DoF (the support carries it:
+/// ContactModel::subtractPrescribedForces) and -k t M_jl tau u on the master.
+///
 /// Inputs of the derivatives, in this order: r (dim), n (dim), w (dim), D, g~.
 #include <array>
 
@@ -71,7 +86,17 @@ struct FrictionalNodeInput {
   double D = 0.0;                      ///< D_j > 0
   double gap = 0.0;                    ///< weighted gap g~_j
   std::array<bool, dim> prescribed{};  ///< Dirichlet components of the node
+  /// Prescribed components that move the slave relative to the master (a
+  /// pusher, a clamp; not a symmetry plane that the master shares, where the
+  /// relative motion across the plane is zero): they carry friction too, as
+  /// an explicit traction (the driven directions, see below).
+  std::array<bool, dim> driven{};
+  std::array<double, dim> oldTraction{};  ///< contact traction k lambda of the last converged step (driven directions)
   std::array<double, dim> lastSlip{};  ///< weighted slip of the last converged step (slipDirectionFromSlip)
+  /// Unit slip direction d of the node's slip rows at the previous iterate
+  /// (FrictionalNodeRows::direction; zero when it did not slip): a slipping
+  /// node that slid against it is set to stick (frictionalState).
+  std::array<double, dim> previousDirection{};
   /// The node opened earlier in this step: when it closes again it is judged
   /// on its augmented values instead of starting as stick (a closing node
   /// forced to stick inside a sliding zone can be pulled open by the tie and
@@ -96,7 +121,10 @@ struct FrictionalNodeState {
 /// plain equilibrium and lambda = 0); a node that closes starts as Stick (the
 /// stick guess of Algorithm 3), one that closes again within the step
 /// (`reclosing`) is judged on its augmented values from the stick side.
-/// A node whose free components hardly
+/// A slipping node that slid against the direction of its slip rows
+/// (`previousDirection`) so far that lambdā_tau points against it sticks
+/// instead of slipping the other way (FrictionalNode.cpp, slipReversed: the
+/// stick/slip 2-cycle of a stiff punch). A node whose free components hardly
 /// see its normal (CondensationFrame::usable false) stays Inactive.
 template <int dim>
 FrictionalNodeState<dim> frictionalState(const FrictionalNodeInput<dim>& in, ContactState previous,
@@ -109,6 +137,7 @@ struct FrictionalNodeRows {
   bool usable = false;
   std::array<double, dim> rows{};  ///< row value per component slot (prescribed slots: 0)
   std::array<double, dim> lambda{};  ///< recovered multiplier lambda_j (traction / k)
+  std::array<double, dim> direction{};  ///< unit slip direction d of the slip rows (zero when sticking)
   /// d rows[c] / d input[i], d lambda[c] / d input[i]; inputs ordered r, n, w, D, g~.
   std::array<std::array<double, kFrictionalInputs<dim>>, dim> dRows{}, dLambda{};
 };

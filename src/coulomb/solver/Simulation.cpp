@@ -276,6 +276,9 @@ RunSummary Simulation::run() {
     lastStep = next - time;
     displacement_->assign(trial);
     assembler_->assemble(next, *displacement_, nullptr, nullptr, reactions_.get());
+    // A contact force on a prescribed DoF never enters the equations: the
+    // support carries it (reaction = f_int - f_ext - f_c there).
+    if (contact_) contact_->subtractPrescribedForces(*reactions_);
     ++summary.steps;
     summary.newtonIterations += iterations;
     summary.linearIterations += report.linearIterations();
