@@ -4,8 +4,8 @@
   tests/performance/friction_post.py RESULT.e [--log stdout.txt] [--deck deck.xml] [--mu MU]
 
 Prints one line of JSON with the keys of the CalculiX peer harness
-(/work/shared/bench/calculix/ccxbench.py, analyze_friction; definitions in
-/work/shared/bench/calculix/README.md, case friction) for xml/friction_punch.xml
+(../shared/bench/calculix/ccxbench.py, analyze_friction; definitions in
+../shared/bench/calculix/README.md, case friction) for xml/friction_punch.xml
 or a copy of it (scripts/bench friction):
 
   history          one row per written (= converged) load step:

@@ -4,8 +4,8 @@
   tests/performance/hertz_post.py RESULT.e --case hertz2d|hertz3d [--profile] [--step K]
 
 Prints one line of JSON with the accuracy keys of the CalculiX peer harness
-(/work/shared/bench/calculix/ccxbench.py, analyze_hertz and hertz_2d/hertz_3d;
-definitions in /work/shared/bench/calculix/README.md), evaluated on the LAST
+(../shared/bench/calculix/ccxbench.py, analyze_hertz and hertz_2d/hertz_3d;
+definitions in ../shared/bench/calculix/README.md), evaluated on the LAST
 time step of the result (or step K, 1-based):
 
   P (3D) / P_per_length (2D)   |reaction_top_z| / |reaction_top_y| (global

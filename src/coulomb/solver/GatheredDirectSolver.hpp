@@ -5,7 +5,7 @@
 ///
 /// Debian's Trilinos 13.2 Amesos2 KLU2 returns wrong solutions when the
 /// matrix is distributed (or not contiguously numbered), while Stratimikos
-/// reports convergence (docs: /work/shared/notes/trilinos-debian-13.2.md).
+/// reports convergence (docs: ../shared/notes/trilinos-debian-13.2.md).
 /// This strategy gathers the distributed Tpetra::CrsMatrix to rank 0,
 /// renumbers it contiguously (0..n-1 in sorted global-index order) on a
 /// one-process communicator, factors it there, and for each solve gathers
