@@ -363,6 +363,57 @@ TEST(FrictionalNode, SlipAgainstItsDirectionSticks) {
   EXPECT_EQ(frictionalState<3>(node, kSlip, p).state, kSlip);
 }
 
+// A slipping node that slid against its slip direction d by a little: the
+// slip augmentation takes less than the hysteresis (2 %) off |lambdā_tau|, so
+// the rule alone keeps it slipping, and its slip rows would converge with the
+// friction force along the slip (negative dissipation). It sticks; a slip
+// against d at the round-off of w does not change the state.
+TEST(FrictionalNode, SlightSlipAgainstItsDirectionSticks) {
+  const auto p = coulombParameters(0.3);  // k 2, eps_tau 5, t 1.5, alpha 0.7
+  FrictionalNodeInput<2> in;
+  in.normal = {0.0, -1.0};
+  in.D = 0.5;
+  const double tD = p.thickness * in.D;
+  in.residual = {tD * -3.0, tD * 10.0};  // Θ = 3, k beta = -3: d = -x
+  in.previousDirection = {-1.0, 0.0};
+  in.slip = {0.005, 0.0};  // lambdā_tau = -3 + 0.7 × 5 × 0.005 / 0.5 = -2.965, |.| > 0.98 Θ = 2.94
+  const auto slight = frictionalState<2>(in, kSlip, p);
+  EXPECT_NEAR(slight.tangentNorm, 2.965, 1e-12);
+  EXPECT_EQ(slight.state, ContactState::Stick);
+  auto roundOff = in;
+  roundOff.slip = {1e-13, 0.0};
+  EXPECT_EQ(frictionalState<2>(roundOff, kSlip, p).state, kSlip);
+  auto along = in;
+  along.slip = {-0.005, 0.0};
+  EXPECT_EQ(frictionalState<2>(along, kSlip, p).state, kSlip);
+}
+
+// A node that closes is judged on its augmented values (lambda = 0) from the
+// stick side: the master passed over it by w before it closed. Penetration
+// g~ = -0.1 (D 0.5, eps_n 50): lambdā_n = 50 × -0.1 / 0.5 = -10, Θ = 3.
+TEST(FrictionalNode, ClosingNodeIsJudgedOnItsSlip) {
+  auto p = coulombParameters(0.3);  // k 2, eps_n 50, eps_tau 5
+  p.roundOffSlip = 1e-10;
+  FrictionalNodeInput<2> in;
+  in.normal = {0.0, -1.0};
+  in.D = 0.5;
+  in.gap = -0.1;
+  in.slip = {0.5, 0.0};  // |lambdā_tau| = 5 × 0.5 / 0.5 = 5 > Θ
+  const auto passed = frictionalState<2>(in, ContactState::Inactive, p);
+  EXPECT_NEAR(passed.threshold, 3.0, 1e-12);
+  EXPECT_NEAR(passed.tangentNorm, 5.0, 1e-12);
+  EXPECT_EQ(passed.state, kSlip);
+  in.slip = {0.2, 0.0};  // 2 < Θ: the cone holds it
+  EXPECT_EQ(frictionalState<2>(in, ContactState::Inactive, p).state, ContactState::Stick);
+  // A slip at the round-off of the coordinates against a threshold at the
+  // round-off too (a node just touching): stick, whatever the last bits.
+  in.gap = -1e-17;
+  in.slip = {4e-11, 0.0};  // |w| / D = 8e-11 < roundOffSlip (Θ = 3e-16)
+  EXPECT_EQ(frictionalState<2>(in, ContactState::Inactive, p).state, ContactState::Stick);
+  in.slip = {1e-9, 0.0};  // above the floor: judged, and the tiny cone does not hold it
+  EXPECT_EQ(frictionalState<2>(in, ContactState::Inactive, p).state, kSlip);
+}
+
 namespace {
 
 /// A node of the prescribed tangential DoF type: component x prescribed and

@@ -236,13 +236,17 @@ TEST(FrictionStiffIndenter, PressingConvergesWithoutCutbacks) {
   EXPECT_LE(run.summary.stepNewtonIterations[0], 10);
   if (worldComm()->getRank() != 0) return;
   const auto& r = run.results;
-  // Momentum balance (to the Newton residual: ||f|| <= 1e-8 of the force
-  // scale, 4e-6 here, 1.5e-8 P), and Coulomb's law per node: slip on the
-  // cone against the slip, stick inside it.
+  // Momentum balance to the Newton residual, and Coulomb's law per node:
+  // slip on the cone against the slip, stick inside it. The reaction minus
+  // the contact force is the sum of the residual over the free rows, at most
+  // sqrt(DoFs) ||f|| (Cauchy-Schwarz; ||f|| = 3e-6 = 1.1e-8 P, the sum
+  // 1.4e-7 P at np = 2).
   const double P = -lastGlobal(r, "reaction_top_y");
   EXPECT_GT(P, 0.0);
-  EXPECT_NEAR(lastGlobal(r, "contact_force_cylinder_y"), P, 1e-7 * P);
-  EXPECT_NEAR(lastGlobal(r, "contact_force_cylinder_x"), -lastGlobal(r, "reaction_top_x"), 1e-7 * P);
+  const double balance = std::sqrt(double(run.summary.dofs)) * run.summary.stepResidualNorms.back().back();
+  EXPECT_NEAR(lastGlobal(r, "contact_force_cylinder_y"), P, balance);
+  EXPECT_NEAR(lastGlobal(r, "contact_force_cylinder_x"), -lastGlobal(r, "reaction_top_x"), balance);
+  EXPECT_LT(balance, 1e-5 * P);
   const auto& state = lastNodal(r, "contact_state");
   const auto& pressure = lastNodal(r, "contact_pressure");
   const auto &tx = lastNodal(r, "contact_tangential_traction_x"), &ty = lastNodal(r, "contact_tangential_traction_y");

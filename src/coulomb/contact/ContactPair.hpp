@@ -213,7 +213,6 @@ private:
   NodalMortarQuantities stepStartMortar_;
   InterfaceConfiguration stepStartX_;
   int steps_ = 0;
-  std::vector<char> openedInStep_;  ///< active -> inactive at some iterate of this step (FrictionalNodeInput::reclosing)
   std::vector<std::array<double, 3>> traction_, stepStartTraction_, weightedSlip_, slipIncrement_,
       stepStartAccumulatedSlip_;
   /// The weighted slip of the last converged step (the slip direction of

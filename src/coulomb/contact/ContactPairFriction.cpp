@@ -28,7 +28,6 @@ namespace {
 struct NodeExtras {
   std::array<bool, 3> prescribed{}, driven{};
   std::array<double, 3> oldTraction{}, lastSlip{}, previousDirection{};
-  bool reclosing = false;
 };
 
 /// The 3-wide input of the kernel's dimension.
@@ -36,7 +35,6 @@ template <int dim>
 FrictionalNodeInput<dim> narrow(const std::array<double, 3>& r, const std::array<double, 3>& n,
                                 const std::array<double, 3>& w, double D, double gap, const NodeExtras& x) {
   FrictionalNodeInput<dim> in;
-  in.reclosing = x.reclosing;
   for (int c = 0; c < dim; ++c) {
     in.lastSlip[c] = x.lastSlip[c];
     in.residual[c] = r[c];
@@ -110,7 +108,6 @@ void addScaled(DerivativeRow& to, const DerivativeRow& from, double scale) {
 
 void ContactPair::settleState(std::size_t i, ContactState state, ContactState previous,
                               PairIterationSummary& summary) {
-  if (isActive(previous) && !isActive(state)) openedInStep_[i] = 1;
   if (!isActive(state)) weightedSlip_[i] = slipIncrement_[i] = {0.0, 0.0, 0.0};  // an open node does not slip
   state_[i] = state;
   countState(summary.activeSet, state, previous);
@@ -124,6 +121,9 @@ FrictionalParameters ContactPair::frictionalParameters() const {
   p.thickness = thickness_;
   p.slipAugmentation = settings_.slipAugmentation;
   p.slipThreshold = settings_.slipThreshold;
+  // 1e-10 of the slave face size: far above the round-off of the
+  // coordinates, far below any slip that matters.
+  p.roundOffSlip = 1e-10 * std::pow(referenceD_, 1.0 / std::max(1, dim_ - 1));
   p.law = settings_.friction;
   p.multiPointConstraint = settings_.formulation == ContactFormulation::MPC;
   p.slipDirectionFromSlip = settings_.slipResetFrequency < 0;
@@ -132,7 +132,18 @@ FrictionalParameters ContactPair::frictionalParameters() const {
 
 std::array<double, 3> ContactPair::weightedSlip(const NodalMortarEntry& entry,
                                                 std::array<DerivativeRow, 3>* derivative) const {
-  // Objective (4.69b): w = (D - D^t) x_j - sum_l (M_jl - M^t_jl) x_l.
+  // Objective (4.69b): w = (D - D^t) x_j - sum_l (M_jl - M^t_jl) x_l, taken
+  // in the translation-invariant form
+  //   w = sum_l (M_jl - M^t_jl) (x_j - x_l),
+  // which drops (ΔD - sum_l ΔM_jl) x_j. That term is zero on a slave node
+  // whose support the master covers (sum_l M_jl = D_jj, the dual basis'
+  // partition of unity), but where the coverage changes (the rim of a
+  // twisted punch overhanging its master, a die's edge) it is the change of
+  // the covered area times the node's absolute position: a slip that moves
+  // with the origin of the coordinates, not frame indifferent, which stick
+  // rows w = 0 cannot satisfy with real motion (tests/zoo/pressed_torsion_3d
+  // stalled in stick with |r_stick| rising). The form keeps (4.69b)'s
+  // objectivity: a rigid motion changes no M_jl and leaves x_j - x_l rotated.
   // Non-objective (4.65a, seed sign): w = -[D (x_j - x^t_j) - sum_l M_jl (x_l - x^t_l)].
   // Without operators of the last converged state (a node that had no
   // master in reach) only the non-objective measure exists.
@@ -156,24 +167,22 @@ std::array<double, 3> ContactPair::weightedSlip(const NodalMortarEntry& entry,
   const double* xj = point(x_, entry.node);
   const double* xtj = point(stepStartX_, entry.node);
   if (objective) {
-    const double dD = entry.D - previous->D;
-    for (int c = 0; c < dim_; ++c) w[c] = dD * xj[c];
     // Union of the master nodes of now and then.
     std::map<long long, std::pair<double, double>> masters;
     for (const auto& [l, m] : entry.M) masters[l].first = m;
     for (const auto& [l, m] : previous->M) masters[l].second = m;
     for (const auto& [l, m] : masters) {
       const double* xl = point(x_, l);
-      for (int c = 0; c < dim_; ++c) w[c] -= (m.first - m.second) * xl[c];
+      for (int c = 0; c < dim_; ++c) w[c] += (m.first - m.second) * (xj[c] - xl[c]);
     }
     if (derivative)
       for (int c = 0; c < dim_; ++c) {
         auto& row = (*derivative)[c];
-        addScaled(row, entry.dD, xj[c]);
-        row[{entry.node, c}] += dD;
         for (const auto& [l, m] : masters) {
+          const double* xl = point(x_, l);
           const auto dM = entry.dM.find(l);
-          if (dM != entry.dM.end()) addScaled(row, dM->second, -point(x_, l)[c]);
+          if (dM != entry.dM.end()) addScaled(row, dM->second, xj[c] - xl[c]);
+          row[{entry.node, c}] += m.first - m.second;
           row[{l, c}] -= m.first - m.second;
         }
       }
@@ -235,7 +244,6 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
     x.oldTraction = stepStartTraction_[i];
     x.lastSlip = lastStepSlip_[i];
     x.previousDirection = slipDirection_[i];
-    x.reclosing = openedInStep_[i] != 0;
     return x;
   };
 
@@ -286,8 +294,7 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
     const auto w = weightedSlip(*entry, &dw);
     const auto rf = residualAt(node);
     p.law.coefficient = settings_.frictionCoefficient(node);
-    NodeExtras extras = extrasOf(i, *entry);
-    extras.reclosing = false;
+    const NodeExtras extras = extrasOf(i, *entry);
     const Rows k = rowsOf(dim_, rf, n, w, entry->D, entry->gap, extras, state_[i], p);
     if (!k.usable) continue;
     slipDirection_[i] = k.direction;

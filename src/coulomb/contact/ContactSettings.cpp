@@ -58,8 +58,8 @@ void addValidContactParameters(ParameterList& valid) {
            "force), states from reactions and gaps",
            io::oneOf({"ALM", "Penalty", "MPC"}));
   pair.set("Penalty", d.penalty,
-           "normal penalty eps_n [force/length^3]; 0 = automatic: Penalty Factor x E / h (E largest Young's modulus "
-           "of the two bodies, h mean slave face size)",
+           "normal penalty eps_n [force/length^3]; 0 = automatic: Penalty Factor x E / h (E = min(E_s, E_m), E_s and "
+           "E_m the largest Young's moduli on the slave and the master side; h mean slave face size)",
            io::nonNegative());
   pair.set("Penalty Factor", d.penaltyFactor, "factor of the automatic penalty", io::positive());
   pair.set("Scale Factor", d.scaleFactor, "ALM scale factor k (contact traction = k lambda)", io::positive());

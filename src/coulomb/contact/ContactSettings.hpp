@@ -48,7 +48,7 @@ struct ContactPairSettings {
   std::string slave;   ///< slave side set (the finer / curved side)
   std::string master;  ///< master side set
   ContactFormulation formulation = ContactFormulation::ALM;
-  double penalty = 0.0;        ///< eps_n [force/length^3]; 0: automatic, penaltyFactor × E / h
+  double penalty = 0.0;        ///< eps_n [force/length^3]; 0: automatic, penaltyFactor × min(E_slave, E_master) / h (ContactPair.cpp)
   double penaltyFactor = 1.0;  ///< factor of the automatic penalty
   double scaleFactor = 1.0;    ///< k of the ALM (lambda = traction / k)
   SemiSmoothNewton semiSmooth = SemiSmoothNewton::Full;

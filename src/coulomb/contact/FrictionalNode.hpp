@@ -60,6 +60,9 @@ struct FrictionalParameters {
   double thickness = 1.0;          ///< t (2D thickness, 1 in 3D)
   double slipAugmentation = 1.0;   ///< alpha > 0
   double slipThreshold = 0.02;     ///< hysteresis of the slip -> stick transition (stickSlipState)
+  /// A closing node whose weighted slip is at most roundOffSlip × D (a
+  /// length: the round-off of the coordinates) sticks (frictionalState).
+  double roundOffSlip = 0.0;
   FrictionLaw law;
   /// MPC: the same rows (ties), states without penalty: the normal decision
   /// and the threshold from the reaction k lambda_n of a tied node (the gap
@@ -97,11 +100,6 @@ struct FrictionalNodeInput {
   /// (FrictionalNodeRows::direction; zero when it did not slip): a slipping
   /// node that slid against it is set to stick (frictionalState).
   std::array<double, dim> previousDirection{};
-  /// The node opened earlier in this step: when it closes again it is judged
-  /// on its augmented values instead of starting as stick (a closing node
-  /// forced to stick inside a sliding zone can be pulled open by the tie and
-  /// cycle between the two states).
-  bool reclosing = false;
 };
 
 /// @brief The nodal quantities of the state decision and the output.
@@ -118,9 +116,9 @@ struct FrictionalNodeState {
 /// @brief The update rule (4.73-4.77) for node `in` whose state at the
 /// previous iterate was `previous`. The multiplier is recovered from the
 /// residual only when `previous` is active (otherwise the node's rows held
-/// plain equilibrium and lambda = 0); a node that closes starts as Stick (the
-/// stick guess of Algorithm 3), one that closes again within the step
-/// (`reclosing`) is judged on its augmented values from the stick side.
+/// plain equilibrium and lambda = 0); a node that closes is judged on its
+/// augmented values from the stick side (Stick if its slip is at the
+/// round-off, FrictionalParameters::roundOffSlip).
 /// A slipping node that slid against the direction of its slip rows
 /// (`previousDirection`) so far that lambdā_tau points against it sticks
 /// instead of slipping the other way (FrictionalNode.cpp, slipReversed: the
