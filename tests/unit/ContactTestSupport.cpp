@@ -2,8 +2,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
+
+#include "coulomb/io/ExodusReader.hpp"
+#include "coulomb/io/ExodusWriter.hpp"
 
 namespace coulomb::test {
 
@@ -57,6 +62,27 @@ ContactRun runDeckText(const std::string& name, const std::string& text) {
   const std::string dir = scratchDirectory(name);
   writeOnRoot(dir + "/deck.xml", text);
   return runFile(dir + "/deck.xml", dir + "/result.e");
+}
+
+int writePatch3dWithPunchLeft(const std::string& path) {
+  int onInterface = 0;
+  if (worldComm()->getRank() == 0) {
+    mesh::GlobalMesh m = io::readExodus(shippedMesh("contact_patch3d.e"));
+    std::set<long long> punch;
+    for (const auto& block : m.blocks)
+      if (block.name == "punch") punch.insert(block.connectivity.begin(), block.connectivity.end());
+    mesh::NodeSet set;
+    set.name = "punch_left";
+    set.id = 100;
+    for (long long n : punch)
+      if (std::abs(m.coordinates[3 * n]) < 1e-12) set.nodes.push_back(n);
+    for (long long n : set.nodes) onInterface += std::abs(m.coordinates[3 * n + 2] - 0.5) < 1e-12 ? 1 : 0;
+    m.nodeSets.push_back(set);
+    io::ExodusWriter writer(path, m, {}, {}, "3D patch with the punch's face x = 0 as a node set");
+    writer.close();
+  }
+  worldComm()->barrier();
+  return onInterface;
 }
 
 double lastGlobal(const io::ExodusResults& r, const std::string& name) {

@@ -41,6 +41,13 @@ ContactRun runDeck(const std::string& name);
 /// Runs the deck text `text` written to <scratch name>/deck.xml.
 ContactRun runDeckText(const std::string& name, const std::string& text);
 
+/// Writes (rank 0) the shipped 3D contact patch mesh contact_patch3d.e with
+/// the punch's nodes on its face x = 0 as node set `punch_left` to `path`
+/// (the bodies' meshes are separate: the base's nodes at the same points are
+/// not in it); all ranks wait for it. Returns (rank 0) how many of those
+/// nodes lie on the interface z = 0.5.
+int writePatch3dWithPunchLeft(const std::string& path);
+
 double lastGlobal(const io::ExodusResults& r, const std::string& name);
 const std::vector<double>& lastNodal(const io::ExodusResults& r, const std::string& name);
 

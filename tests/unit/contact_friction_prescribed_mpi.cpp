@@ -18,8 +18,6 @@
 #include "TestSupport.hpp"
 #include "coulomb/contact/ContactModel.hpp"
 #include "coulomb/fem/Assembler.hpp"
-#include "coulomb/io/ExodusReader.hpp"
-#include "coulomb/io/ExodusWriter.hpp"
 
 namespace coulomb::test {
 namespace {
@@ -113,26 +111,8 @@ void expectEdgeFrictionCarried(ContactRun& run, int dim, int slaveNodes, double 
 ContactRun runPrescribedEdge3d(const std::string& name, const std::string& formulation) {
   const std::string dir = scratchDirectory(name + "_mesh");
   const std::string meshCopy = dir + "/patch3d_punch_left.e";
-  int onInterface = 0;
-  if (worldComm()->getRank() == 0) {
-    mesh::GlobalMesh m = io::readExodus(shippedMesh("contact_patch3d.e"));
-    // The punch's nodes on x = 0 (the two bodies' meshes are separate: the
-    // base's nodes at the same points belong to its own elements only).
-    std::set<long long> punchNodes;
-    for (const auto& block : m.blocks)
-      if (block.name == "punch") punchNodes.insert(block.connectivity.begin(), block.connectivity.end());
-    mesh::NodeSet set;
-    set.name = "punch_left";
-    set.id = 100;
-    for (long long n : punchNodes)
-      if (std::abs(m.coordinates[3 * n]) < 1e-12) set.nodes.push_back(n);
-    for (long long n : set.nodes) onInterface += std::abs(m.coordinates[3 * n + 2] - 0.5) < 1e-12 ? 1 : 0;
-    m.nodeSets.push_back(set);
-    io::ExodusWriter writer(meshCopy, m, {}, {}, "3D patch with the punch's face x = 0 as a node set");
-    writer.close();
-    EXPECT_EQ(onInterface, 5);  // the punch's slave nodes on x = 0 (4 x 4 faces in plan)
-  }
-  worldComm()->barrier();
+  const int onInterface = writePatch3dWithPunchLeft(meshCopy);
+  if (worldComm()->getRank() == 0) EXPECT_EQ(onInterface, 5);  // the punch's slave nodes on x = 0 (4 x 4 faces in plan)
   ShippedDeck deck("friction_patch_3d", "contact_patch3d.e");
   deck.replace(shippedMesh("contact_patch3d.e"), meshCopy);
   deck.replace("<ParameterList name=\"top y\">", punchLeftX("{0.003, 0.0, 0.0078000000000000005}"));

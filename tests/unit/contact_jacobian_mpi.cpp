@@ -22,19 +22,17 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <set>
 #include <sstream>
 
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "ContactTestSupport.hpp"
 #include "TestSupport.hpp"
 #include "coulomb/contact/ContactModel.hpp"
 #include "coulomb/fem/Assembler.hpp"
 #include "coulomb/fem/DofMap.hpp"
-#include "coulomb/io/ExodusReader.hpp"
-#include "coulomb/io/ExodusWriter.hpp"
 
 namespace coulomb::test {
 namespace {
@@ -219,21 +217,7 @@ std::unique_ptr<solver::Simulation> solvePrescribedEdge(int dim) {
   std::string source = shippedMesh(mesh);
   if (dim == 3) {
     source = dir + "/with_punch_left.e";
-    if (worldComm()->getRank() == 0) {
-      mesh::GlobalMesh m = io::readExodus(shippedMesh(mesh));
-      std::set<long long> punch;
-      for (const auto& block : m.blocks)
-        if (block.name == "punch") punch.insert(block.connectivity.begin(), block.connectivity.end());
-      mesh::NodeSet set;
-      set.name = "punch_left";
-      set.id = 100;
-      for (long long n : punch)
-        if (std::abs(m.coordinates[3 * n]) < 1e-12) set.nodes.push_back(n);
-      m.nodeSets.push_back(set);
-      io::ExodusWriter writer(source, m, {}, {}, "3D patch with the punch's face x = 0 as a node set");
-      writer.close();
-    }
-    worldComm()->barrier();
+    writePatch3dWithPunchLeft(source);
   }
   writeDistortedCopy(source, dir + "/mesh.e", 0.15);
   const std::string deck = dim == 2 ? "friction_patch_2d" : "friction_patch_3d";
