@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include <Teuchos_TimeMonitor.hpp>
@@ -15,7 +16,9 @@
 #include "ContactTestSupport.hpp"
 #include "TestSupport.hpp"
 #include "coulomb/contact/ContactModel.hpp"
+#include "coulomb/io/ExodusReader.hpp"
 #include "coulomb/io/ExodusResults.hpp"
+#include "coulomb/io/ExodusWriter.hpp"
 
 namespace coulomb::test {
 namespace {
@@ -357,6 +360,39 @@ TEST(ContactPairs, PenetrationBeyondTheSearchRadiusWidensIt) {
   ASSERT_FALSE(run.summary.stepTimes.empty());
   EXPECT_EQ(run.summary.stepTimes.back(), 1.0);
   if (worldComm()->getRank() != 0) return;
+  EXPECT_NEAR(lastGlobal(run.results, "reaction_top_y"), -p, 1e-6 * p);
+  EXPECT_EQ(lastGlobal(run.results, "contact_active_nodes_punch"), 8.0);
+}
+
+// Bodies that overlap in the mesh by more than the search radius (the
+// punch of the 2D patch moved 0.15 into the base; its faces are 1/7 long, so
+// the default radius is 0.143): before, no slave face had a candidate, the
+// run went through with no contact and a zero reaction. The search finds the
+// slave nodes behind their nearest master face and widens the radius to
+// cover them; the overlap is then closed: with the top moved -0.01, the two
+// bodies (0.5 high each) are compressed by 0.16 over a height 1, the uniform
+// state sigma_yy = -E 0.16 / (1 - nu^2) of the patch test.
+TEST(ContactPairs, InitialOverlapBeyondTheSearchRadiusIsFound) {
+  const std::string dir = scratchDirectory("contact_initial_overlap");
+  const std::string mesh = dir + "/overlap.e";
+  if (worldComm()->getRank() == 0) {
+    mesh::GlobalMesh m = io::readExodus(shippedMesh("contact_patch2d.e"));
+    std::set<long long> punch;
+    for (const auto& block : m.blocks)
+      if (block.name == "punch") punch.insert(block.connectivity.begin(), block.connectivity.end());
+    ASSERT_FALSE(punch.empty());
+    for (long long n : punch) m.coordinates[2 * n + 1] -= 0.15;
+    io::ExodusWriter writer(mesh, m, {}, {}, "2D patch, punch 0.15 into the base");
+    writer.close();
+  }
+  worldComm()->barrier();
+  ShippedDeck deck("contact_patch_2d", "contact_patch2d.e");
+  deck.replace(shippedMesh("contact_patch2d.e"), mesh);
+  auto run = runDeckText("contact_initial_overlap_run", deck.text);
+  ASSERT_FALSE(run.summary.stepTimes.empty());
+  EXPECT_EQ(run.summary.stepTimes.back(), 1.0);
+  if (worldComm()->getRank() != 0) return;
+  const double E = 210000, nu = 0.3, strain = 0.16, p = E * strain / (1 - nu * nu);
   EXPECT_NEAR(lastGlobal(run.results, "reaction_top_y"), -p, 1e-6 * p);
   EXPECT_EQ(lastGlobal(run.results, "contact_active_nodes_punch"), 8.0);
 }

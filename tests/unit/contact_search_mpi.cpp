@@ -201,9 +201,30 @@ TEST_P(ContactSearchTwoBodies, GapLargerThanTheRadiusFindsNothing) {
   const SearchResult r = contact::searchContactPairs(c, x, 0.15);
   EXPECT_EQ(contact::globalPairCount(r, *worldComm()), 0);
   for (const auto& list : r.candidates) EXPECT_TRUE(list.empty());
+  EXPECT_EQ(r.unpairedDepth, 0.0);  // the slave body is in front of the master
   // ... and everything on the contact plane once the radius covers the gap.
   const SearchResult all = contact::searchContactPairs(c, x, 0.25);
   checkAgainstBruteForce(c, x, all, [dim](const Box& s, const Box& m) { return withinRadius(s, m, dim, 0.25); });
+}
+
+// Bodies overlapping by 0.2 (the slave plane 0.2 below the master plane):
+// with a radius 0.15 no face has a candidate, and the search reports the
+// slave nodes inside the master at the depth 0.2 (every rank's share; the
+// maximum over ranks is 0.2 on every slave node).
+TEST_P(ContactSearchTwoBodies, OverlapBeyondTheRadiusGivesItsDepth) {
+  const int dim = GetParam();
+  const auto mesh = twoBodies(dim, -0.2, "contact_search");
+  const ContactInterface c(*mesh, "upper_bottom", "lower_top");
+  const InterfaceConfiguration x = contact::referenceConfiguration(c);
+  const SearchResult r = contact::searchContactPairs(c, x, 0.15);
+  EXPECT_EQ(contact::globalPairCount(r, *worldComm()), 0);
+  double depth = 0;
+  Teuchos::reduceAll(*worldComm(), Teuchos::REDUCE_MAX, r.unpairedDepth, Teuchos::outArg(depth));
+  EXPECT_NEAR(depth, 0.2, 1e-14);
+  if (!r.slaveFaces.empty()) {
+    EXPECT_NEAR(r.unpairedDepth, 0.2, 1e-14);
+    EXPECT_GE(c.slaveNodeIndex(r.unpairedNode), 0);
+  }
 }
 
 TEST_P(ContactSearchTwoBodies, PairsFollowTheCurrentConfiguration) {

@@ -270,7 +270,8 @@ bool ContactModel::converged() const {
 }
 
 std::vector<std::string> ContactModel::nodalFieldNames() const {
-  std::vector<std::string> names = {"contact_pressure", "contact_gap", "contact_weighted_gap", "contact_state"};
+  std::vector<std::string> names = {"contact_pressure", "contact_gap", "contact_weighted_gap", "contact_area",
+                                    "contact_state"};
   for (int c = 0; c < dim_; ++c) names.push_back(std::string("contact_normal_") + kComponents[c]);
   for (int c = 0; c < dim_; ++c) names.push_back(std::string("contact_multiplier_") + kComponents[c]);
   if (anyFrictional())
@@ -286,17 +287,20 @@ void ContactModel::nodalFields(const Teuchos::RCP<const Map>& ownedNodeMap, Mult
     for (const auto& o : pair->nodeOutput()) {
       const LocalOrdinal i = ownedNodeMap->getLocalElement(o.node);
       if (i == Teuchos::OrdinalTraits<LocalOrdinal>::invalid()) continue;
+      // The order of nodalFieldNames().
       view[0][i] = o.pressure;
       view[1][i] = o.gap;
       view[2][i] = o.weightedGap;
-      view[3][i] = static_cast<double>(static_cast<int>(o.state));
+      view[3][i] = o.area;
+      view[4][i] = static_cast<double>(static_cast<int>(o.state));
+      constexpr int vectors = 5;
       for (int c = 0; c < dim_; ++c) {
-        view[4 + c][i] = o.normal[c];
-        view[4 + dim_ + c][i] = o.multiplier[c];
+        view[vectors + c][i] = o.normal[c];
+        view[vectors + dim_ + c][i] = o.multiplier[c];
         if (anyFrictional()) {
-          view[4 + 2 * dim_ + c][i] = o.tangentialTraction[c];
-          view[4 + 3 * dim_ + c][i] = o.weightedSlip[c];
-          view[4 + 4 * dim_ + c][i] = o.slip[c];
+          view[vectors + 2 * dim_ + c][i] = o.tangentialTraction[c];
+          view[vectors + 3 * dim_ + c][i] = o.weightedSlip[c];
+          view[vectors + 4 * dim_ + c][i] = o.slip[c];
         }
       }
     }

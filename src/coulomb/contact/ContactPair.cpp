@@ -217,18 +217,49 @@ bool ContactPair::isPrescribed(long long node, int c) const {
   return i >= 0 && prescribed_[i][c];
 }
 
+void ContactPair::search() {
+  std::string failure;
+  try {
+    radius_ = std::max(defaultSearchRadius(*interface_, x_, settings_.searchRadiusFactor), widenedRadius_);
+    search_ = searchContactPairs(*interface_, x_, radius_);
+  } catch (const Error& e) {
+    failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();
+  }
+  throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
+  // Slave nodes inside the master beyond the radius (bodies that overlap):
+  // widen the radius to twice the deepest and search again, at once.
+  const auto& comm = *interface_->comm();
+  double depth = 0.0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, search_.unpairedDepth, Teuchos::outArg(depth));
+  if (!(depth > 0.0) || 2.0 * depth <= radius_) return;
+  long long node = search_.unpairedDepth == depth ? search_.unpairedNode : -1, deepestNode = -1;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, node, Teuchos::outArg(deepestNode));
+  std::ostringstream note;
+  note << "Contact/Pairs/" << settings_.name << ": slave node " << deepestNode + 1 << " lies " << depth
+       << " inside the master, beyond the search radius " << radius_ << ": the radius is widened to " << 2.0 * depth;
+  notes_.push_back(note.str());
+  widenedRadius_ = std::max(widenedRadius_, 2.0 * depth);
+  radius_ = widenedRadius_;
+  search_ = searchContactPairs(*interface_, x_, radius_);
+}
+
+std::vector<std::string> ContactPair::takeNotes() {
+  std::vector<std::string> notes;
+  notes.swap(notes_);
+  return notes;
+}
+
 void ContactPair::searchAndIntegrate(const Vector& u) {
   static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact search and mortar values");
   Teuchos::TimeMonitor scope(*timer);
   x_ = gather_->gather(u);
   std::string failure;
   NodalMortarQuantities local;
+  if (!searched_ || settings_.searchEveryIteration) {
+    search();
+    searched_ = true;
+  }
   try {
-    if (!searched_ || settings_.searchEveryIteration) {
-      radius_ = std::max(defaultSearchRadius(*interface_, x_, settings_.searchRadiusFactor), widenedRadius_);
-      search_ = searchContactPairs(*interface_, x_, radius_);
-      searched_ = true;
-    }
     std::vector<int> needed = interface_->slaveNodesOfOwnedFaces();
     needed.insert(needed.end(), interface_->ownedSlaveNodes().begin(), interface_->ownedSlaveNodes().end());
     std::sort(needed.begin(), needed.end());
@@ -542,6 +573,7 @@ std::vector<ContactPair::NodeOutput> ContactPair::nodeOutput() const {
     o.pressure = pressure_[i];
     if (const NodalMortarEntry* entry = mortar_.find(o.node)) {
       o.weightedGap = entry->gap;
+      o.area = entry->D;
       o.gap = entry->D > minimumD_ ? entry->gap / entry->D : 0.0;
     }
     if (static_cast<std::size_t>(owned[i]) < normals_.size()) o.normal = normals_[owned[i]].n;

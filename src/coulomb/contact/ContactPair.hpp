@@ -138,6 +138,9 @@ public:
   struct NodeOutput {
     long long node = -1;
     double pressure = 0, weightedGap = 0, gap = 0;
+    /// D_j: the mortar weight of the node, its share of the slave surface
+    /// in contact with the master (current configuration; force = D_j x traction).
+    double area = 0;
     std::array<double, 3> normal{}, multiplier{};
     /// Frictional pairs: tangential traction on the slave, weighted slip
     /// increment of the step (seed sign, 4.69b), accumulated slip of the
@@ -147,10 +150,17 @@ public:
   };
   std::vector<NodeOutput> nodeOutput() const;
 
+  /// Console notes of this pair since the last call (identical on every rank),
+  /// e.g. a search radius widened for bodies that overlap.
+  std::vector<std::string> takeNotes();
+
   /// Friction law, stick/slip state and slip of this pair (FrictionalNode.hpp).
   bool frictional() const { return settings_.frictional(); }
 
 private:
+  /// Collective: the candidate search at x_, widening the radius when slave
+  /// nodes lie inside the master beyond it (SearchResult::unpairedDepth).
+  void search();
   void searchAndIntegrate(const Vector& u);
   void differentiateActive();
   /// The derivative pass for the owned slave nodes flagged (ownedSlaveNodes() order).
@@ -197,6 +207,7 @@ private:
   double deepest_ = 0.0;         ///< this pass: deepest penetration beyond the radius (this rank)
   double widenedRadius_ = 0.0;   ///< the search radius never goes below this (widenSearchRadius)
   SearchResult search_;
+  std::vector<std::string> notes_;    ///< console notes not yet taken (takeNotes)
   InterfaceConfiguration x_;          ///< current interface coordinates (last update)
   std::vector<NodalNormal> normals_;  ///< by slave node index, values
   NodalMortarQuantities mortar_;      ///< owned slave nodes, values

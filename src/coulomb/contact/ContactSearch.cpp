@@ -5,14 +5,17 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <utility>
 
 #include <boost/geometry/geometries/box.hpp>
 #include <boost/geometry/geometries/point.hpp>
 #include <boost/geometry/index/rtree.hpp>
+#include <boost/geometry/strategies/strategies.hpp>
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include "coulomb/contact/FaceProximity.hpp"
 #include "coulomb/core/Error.hpp"
 
 namespace coulomb::contact {
@@ -49,6 +52,58 @@ bool enlargedBox(const ContactFace& face, const InterfaceConfiguration& x, doubl
 void requireRadius(double value, const char* what) {
   COULOMB_REQUIRE(std::isfinite(value) && value >= 0.0,
                   "contact search: the " << what << " must be finite and >= 0, got " << value);
+}
+
+/// Faces as coordinates (2D: z = 0).
+std::array<std::array<double, 3>, 4> faceCoordinates(const ContactFace& face, const InterfaceConfiguration& x) {
+  std::array<std::array<double, 3>, 4> nodes{};
+  for (int a = 0; a < face.numNodes; ++a)
+    for (int c = 0; c < x.dimension; ++c) nodes[a][c] = x.point(face.interfaceIndex[a])[c];
+  return nodes;
+}
+
+/// Euclidean distance from a point to a box (0 inside).
+double boxDistance(const std::array<double, 3>& p, const Box& box) {
+  const double lo[3] = {bg::get<bg::min_corner, 0>(box), bg::get<bg::min_corner, 1>(box), bg::get<bg::min_corner, 2>(box)};
+  const double hi[3] = {bg::get<bg::max_corner, 0>(box), bg::get<bg::max_corner, 1>(box), bg::get<bg::max_corner, 2>(box)};
+  double d2 = 0.0;
+  for (int c = 0; c < 3; ++c) {
+    const double outside = std::max({lo[c] - p[c], 0.0, p[c] - hi[c]});
+    d2 += outside * outside;
+  }
+  return std::sqrt(d2);
+}
+
+/// A slave face with no candidate: are its nodes inside the master body,
+/// deeper than the radius reaches? For each node, the nearest master face
+/// (R-tree nearest query in increasing box distance, stopped once a box is
+/// farther than the best exact distance: the enlarged box contains its face,
+/// so no later face can be nearer); a node behind that face with its
+/// projection on it is inside, at the depth -normalDistance.
+template <typename Tree>
+void recordUnpairedDepth(const ContactInterface& contact, const InterfaceConfiguration& x, const Tree& tree,
+                         const ContactFace& slave, SearchResult& result) {
+  const auto& masters = contact.masterFaces();
+  for (int a = 0; a < slave.numNodes; ++a) {
+    const double* p = x.point(slave.interfaceIndex[a]);
+    const std::array<double, 3> point{p[0], p[1], x.dimension == 3 ? p[2] : 0.0};
+    const Point query(point[0], point[1], point[2]);
+    double best = std::numeric_limits<double>::infinity();
+    FaceProximity nearest;
+    for (auto it = tree.qbegin(bgi::nearest(query, static_cast<unsigned>(tree.size()))); it != tree.qend(); ++it) {
+      if (boxDistance(point, it->first) > best) break;
+      const ContactFace& master = masters[it->second];
+      const FaceProximity near = faceProximity(x.dimension, master.numNodes, faceCoordinates(master, x), point);
+      if (near.distance < best) {
+        best = near.distance;
+        nearest = near;
+      }
+    }
+    if (nearest.overFace && nearest.normalDistance < 0.0 && -nearest.normalDistance > result.unpairedDepth) {
+      result.unpairedDepth = -nearest.normalDistance;
+      result.unpairedNode = slave.nodes[a];
+    }
+  }
 }
 
 }  // namespace
@@ -120,6 +175,7 @@ SearchResult searchContactPairs(const ContactInterface& contact, const Interface
     found.reserve(hits.size());
     for (const Entry& hit : hits) found.push_back(hit.second);
     std::sort(found.begin(), found.end());
+    if (found.empty()) recordUnpairedDepth(contact, x, tree, slaves[s], result);
   }
   return result;
 }

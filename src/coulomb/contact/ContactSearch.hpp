@@ -25,6 +25,11 @@
 /// any rank count (each slave face is searched by exactly one rank). Only the
 /// pair count for logs (globalPairCount) is a collective.
 ///
+/// Overlap beyond the radius: a slave face with no candidate is checked for
+/// nodes inside the master body (behind their nearest master face, see
+/// FaceProximity.hpp), so that a caller can widen the radius instead of
+/// running with no contact where the surfaces overlap.
+///
 /// Faces with a non-finite coordinate (a diverged Newton iterate) are left out
 /// of the search and counted in SearchResult::skippedFaces, so that the caller
 /// can reject the iterate instead of failing inside the tree.
@@ -54,6 +59,12 @@ struct SearchResult {
   /// of slaveFaces[k], increasing.
   std::vector<std::vector<int>> candidates;
   long long skippedFaces = 0;   ///< slave + master faces left out for non-finite coordinates (this rank)
+  /// Of the nodes of the searched slave faces with no candidate: the largest
+  /// depth at which one lies behind its nearest master face, its projection
+  /// on that face (inside the master body, beyond the radius: bodies that
+  /// overlap), and that node's global number; 0 and -1 when there is none.
+  double unpairedDepth = 0.0;
+  long long unpairedNode = -1;
 
   /// Number of (slave, master) candidate pairs on this rank.
   long long numLocalPairs() const;

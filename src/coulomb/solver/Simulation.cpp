@@ -163,7 +163,9 @@ void Simulation::reportContact(RunSummary& summary) {
     const auto& pair = contact_->pairSummaries()[p];
     const auto active = static_cast<long long>(pair.activeSet.active);
     summary.pairMaximumActive[p] = std::max(summary.pairMaximumActive[p], active);
+    const auto notes = contact_->pairs()[p]->takeNotes();
     if (!console_) continue;
+    for (const auto& note : notes) *console_ << "  note: " << note << "\n";
     *console_ << "  contact '" << contact_->pairs()[p]->settings().name << "': " << active << " active nodes, force (";
     for (int c = 0; c < dim; ++c) *console_ << (c ? ", " : "") << std::setprecision(6) << pair.slaveForce[c];
     *console_ << ")\n" << std::defaultfloat;
