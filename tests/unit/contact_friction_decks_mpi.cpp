@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <vector>
 
 #include "ContactTestSupport.hpp"
@@ -457,6 +458,78 @@ TEST(FrictionFrameIndifference, ObjectiveSlipKeepsTheContactUnderRigidRotation) 
 // (Where: the pressing already makes the punch's x edges slip outward; the
 // pull then keeps the leading edge slipping and unloads the trailing one,
 // so the stick zone retreats towards the trailing edge — xml/friction_punch.xml.)
+// The objective slip does not depend on where the origin of the
+// coordinates is. A punch overhanging its base (the 2D patch with the punch
+// moved 0.25 to the right: the slave nodes at the base's corner are only
+// partly covered by the master) pressed and sheared with Coulomb friction,
+// once as meshed and once with the whole mesh moved by (1000, 1000): the
+// displacements agree to 1e-9 of the largest (measured: 1e-11). Any use of
+// absolute coordinates in the slip, the gap or the search would show here.
+// (4.69b) as written differs from the translation-invariant form used by
+// (D - D^t - sum_l (M - M^t)) x_j, which the lumped D makes zero up to
+// round-off: both forms pass this test.
+TEST(FrictionFrameIndifference, ObjectiveSlipIsTranslationInvariant) {
+  const std::string dir = scratchDirectory("friction_translation");
+  auto writeMesh = [&](const std::string& path, double shift) {
+    if (worldComm()->getRank() != 0) return;
+    mesh::GlobalMesh m = io::readExodus(shippedMesh("contact_patch2d.e"));
+    std::set<long long> punch;
+    for (const auto& block : m.blocks)
+      if (block.name == "punch") punch.insert(block.connectivity.begin(), block.connectivity.end());
+    ASSERT_FALSE(punch.empty());
+    for (long long n : punch) m.coordinates[2 * n] += 0.25;
+    for (double& x : m.coordinates) x += shift;
+    io::ExodusWriter writer(path, m, {}, {}, "2D patch, punch overhanging by 0.25");
+    writer.close();
+  };
+  writeMesh(dir + "/here.e", 0.0);
+  writeMesh(dir + "/there.e", 1000.0);
+  worldComm()->barrier();
+  ShippedDeck deck("contact_patch_2d", "contact_patch2d.e");
+  deck.replace("<Parameter name=\"Master\" type=\"string\" value=\"master\"/>",
+               "<Parameter name=\"Master\" type=\"string\" value=\"master\"/>"
+               "<Parameter name=\"Friction Law\" type=\"string\" value=\"Coulomb\"/>"
+               "<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0.3\"/>");
+  deck.replace("<ParameterList name=\"top\">",
+               "<ParameterList name=\"top x\"><Parameter name=\"Node Set\" type=\"string\" value=\"top\"/>"
+               "<Parameter name=\"Component\" type=\"string\" value=\"x\"/>"
+               "<Parameter name=\"Value\" type=\"double\" value=\"0.02\"/></ParameterList>"
+               "<ParameterList name=\"top\">");
+  // The base held in x at its bottom instead of both bodies at x = 0: the
+  // punch is held sideways by friction alone.
+  deck.replace("<Parameter name=\"Node Set\" type=\"string\" value=\"left\"/>",
+               "<Parameter name=\"Node Set\" type=\"string\" value=\"bottom\"/>");
+  std::vector<std::vector<double>> displacement;
+  for (const std::string mesh : {"here", "there"}) {
+    std::string text = deck.text;
+    const auto at = text.find(shippedMesh("contact_patch2d.e"));
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, shippedMesh("contact_patch2d.e").size(), dir + "/" + mesh + ".e");
+    auto run = runDeckText("friction_translation_" + mesh, text);
+    ASSERT_EQ(run.summary.stepTimes.back(), 1.0);
+    if (worldComm()->getRank() != 0) continue;
+    std::vector<double> u = lastNodal(run.results, "displacement_x");
+    const auto& uy = lastNodal(run.results, "displacement_y");
+    u.insert(u.end(), uy.begin(), uy.end());
+    displacement.push_back(u);
+    if (mesh == "here") {  // the punch is in contact over the base and slides
+      EXPECT_GE(lastGlobal(run.results, "contact_active_nodes_punch"), 6.0);
+      EXPECT_LT(lastGlobal(run.results, "contact_stick_nodes_punch"),
+                lastGlobal(run.results, "contact_active_nodes_punch"));
+    }
+  }
+  if (worldComm()->getRank() != 0) return;
+  ASSERT_EQ(displacement.size(), 2u);
+  ASSERT_EQ(displacement[0].size(), displacement[1].size());
+  double largest = 0, difference = 0;
+  for (std::size_t i = 0; i < displacement[0].size(); ++i) {
+    largest = std::max(largest, std::abs(displacement[0][i]));
+    difference = std::max(difference, std::abs(displacement[0][i] - displacement[1][i]));
+  }
+  std::printf("translation: max |u| %.6e, max difference %.3e\n", largest, difference);
+  EXPECT_LT(difference, 1e-9 * largest);
+}
+
 TEST(FrictionPunch, StickPartialSlipThenGrossSlipAtMuP) {
   auto run = runDeck("friction_punch");
   EXPECT_EQ(run.summary.cutbacks, 0);

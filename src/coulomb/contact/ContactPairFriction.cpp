@@ -135,15 +135,14 @@ std::array<double, 3> ContactPair::weightedSlip(const NodalMortarEntry& entry,
   // Objective (4.69b): w = (D - D^t) x_j - sum_l (M_jl - M^t_jl) x_l, taken
   // in the translation-invariant form
   //   w = sum_l (M_jl - M^t_jl) (x_j - x_l),
-  // which drops (ΔD - sum_l ΔM_jl) x_j. That term is zero on a slave node
-  // whose support the master covers (sum_l M_jl = D_jj, the dual basis'
-  // partition of unity), but where the coverage changes (the rim of a
-  // twisted punch overhanging its master, a die's edge) it is the change of
-  // the covered area times the node's absolute position: a slip that moves
-  // with the origin of the coordinates, not frame indifferent, which stick
-  // rows w = 0 cannot satisfy with real motion (tests/zoo/pressed_torsion_3d
-  // stalled in stick with |r_stick| rising). The form keeps (4.69b)'s
-  // objectivity: a rigid motion changes no M_jl and leaves x_j - x_l rotated.
+  // which drops (ΔD - sum_l ΔM_jl) x_j. With the lumped D of the mortar
+  // kernels (D_j = sum_l M_jl segment by segment) that term is zero up to
+  // round-off, so the two forms are the same slip; the form leaves out the
+  // round-off's dependence on the origin (eps_mach |x_j| D, a slip that
+  // grows with the distance from the origin) and keeps (4.69b)'s
+  // objectivity: a rigid motion changes no M_jl and rotates x_j - x_l.
+  // (tests/unit/contact_friction_decks_mpi.cpp,
+  // FrictionFrameIndifference.ObjectiveSlipIsTranslationInvariant.)
   // Non-objective (4.65a, seed sign): w = -[D (x_j - x^t_j) - sum_l M_jl (x_l - x^t_l)].
   // Without operators of the last converged state (a node that had no
   // master in reach) only the non-objective measure exists.
