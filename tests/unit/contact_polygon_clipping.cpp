@@ -125,32 +125,82 @@ TEST(MortarClipping, AreaDerivativeWithFadScalar) {
   }
 }
 
-// A subject corner just outside a clip edge: inside the on-edge band
-// (kOnEdgeFactor merge tolerances) it stays a vertex of the result, the
-// polygon keeps its four corners and its derivative is that of the subject
-// alone (the matching-mesh case: iterates scatter about coincident edges and
-// must not switch the polygon's form); beyond the band it is cut off by the
-// intersection, which lies on the clip line.
-TEST(MortarClipping, VertexInTheOnEdgeBandStaysAVertex) {
+// A subject corner just outside a clip edge, from inside the on-edge band
+// (kOnEdgeFactor merge tolerances) to the end of the snap zone (2
+// kSnapRelative edge lengths): the polygon keeps its four corners and its
+// right edge on the clip line x = 1 (the matching-mesh case: iterates
+// scatter about coincident edges and must not switch the polygon's form).
+// Within the snap zone the corner is moved onto the line; beyond it, it is
+// cut off by the intersection, which lies on the line too.
+TEST(MortarClipping, CornerNearAClipEdgeKeepsTheFourCorners) {
   const double tol = 1e-10;
-  for (double outside : {0.5 * kOnEdgeFactor * tol, 2.0 * kOnEdgeFactor * tol}) {
-    // The unit square with its corner (1, 1) moved outside the clip's edge x = 1.
+  for (double outside : {5 * tol, 0.5 * kOnEdgeFactor * tol, 2.0 * kOnEdgeFactor * tol, 0.5 * kSnapRelative,
+                         1.5 * kSnapRelative, 3.0 * kSnapRelative}) {
     const Polygon2<double> subject = polygon({{0.0, 0.0}, {1.0, 0.0}, {1.0 + outside, 1.0}, {0.0, 1.0}});
     const Polygon2<double> c = clipConvexPolygon(subject, kUnitSquare, tol);
-    const bool inBand = outside < kOnEdgeFactor * tol;
     EXPECT_EQ(c.size, 4) << outside;
     double maxX = 0.0;
     for (int k = 0; k < c.size; ++k) maxX = std::max(maxX, c.vertex[k][0]);
-    EXPECT_DOUBLE_EQ(maxX, inBand ? 1.0 + outside : 1.0) << outside;
+    EXPECT_NEAR(maxX, 1.0, 1e-15) << outside;
   }
-  // The band's width itself: 5 merge tolerances outside is still on the edge
-  // (with a band of one tolerance, the old one, the 3D stick patch on a
-  // matching mesh did not converge).
-  const Polygon2<double> c = clipConvexPolygon(polygon({{0.0, 0.0}, {1.0, 0.0}, {1.0 + 5 * tol, 1.0}, {0.0, 1.0}}),
-                                               kUnitSquare, tol);
-  double maxX = 0.0;
-  for (int k = 0; k < c.size; ++k) maxX = std::max(maxX, c.vertex[k][0]);
-  EXPECT_DOUBLE_EQ(maxX, 1.0 + 5 * tol);
+}
+
+// A subject edge nearly collinear with a clip edge: the subject's bottom edge
+// from (0, c - m/2) to (1, c + m/2) against the unit square's y = 0, slope
+// m = 1e-6. Exact clipping cuts off the sliver below y = 0, of area
+// (c + m/2)^2 / (2 m) while the edges cross inside (|c| < m/2): the area's
+// second derivative in c is 1/m = 1e6, the curvature that stalled Newton on
+// two coincident cylinder rims (tests/zoo/pressed_torsion_3d). Snapped,
+// both ends lie on the clip line and the area is 1 for every such c:
+// second differences at the round-off of the area.
+TEST(MortarClipping, NearlyCollinearEdgesGiveASmoothArea) {
+  const double tol = 1e-10, m = 1e-6, h = 1e-7;
+  auto area = [&](double c) {
+    return signedArea(clipConvexPolygon(polygon({{0.0, c - m / 2}, {1.0, c + m / 2}, {1.0, 1.0}, {0.0, 1.0}}),
+                                        kUnitSquare, tol));
+  };
+  for (double c : {-2 * h, 0.0, 2 * h}) {
+    EXPECT_NEAR(area(c), 1.0, 1e-15) << c;
+    const double second = (area(c + h) - 2 * area(c) + area(c - h)) / (h * h);
+    EXPECT_LT(std::abs(second), 1.0) << c;  // 1e6 without the snap
+  }
+}
+
+// In the snap zone's outer half the move is a C2 fading fraction of the
+// distance: the area of the unit square whose bottom edge is lifted to
+// y = c, clipped by the unit square, is 1 - c beyond 2 snap, 1 within snap,
+// and in between a C1 blend whose Fad derivative matches central
+// differences (the move's derivative reaches the vertices).
+TEST(MortarClipping, SnapIsContinuousWithItsFadDerivative) {
+  using Fad = Sacado::Fad::SFad<double, 27>;
+  const double tol = 1e-10, snap = kSnapRelative;  // the clip edges are 1 long
+  auto lifted = [](auto c) {
+    using T = decltype(c);
+    Polygon2<T> p;
+    p.push({T(0.0), c});
+    p.push({T(1.0), c});
+    p.push({T(1.0), T(1.0)});
+    p.push({T(0.0), T(1.0)});
+    return p;
+  };
+  Polygon2<Fad> square;
+  for (int i = 0; i < kUnitSquare.size; ++i) square.push({Fad(kUnitSquare.vertex[i][0]), Fad(kUnitSquare.vertex[i][1])});
+  auto value = [&](double c) { return signedArea(clipConvexPolygon(lifted(c), kUnitSquare, tol)); };
+  EXPECT_NEAR(value(0.5 * snap), 1.0, 1e-15);
+  EXPECT_NEAR(value(2.5 * snap), 1.0 - 2.5 * snap, 1e-15);
+  auto derivative = [&](double x) {
+    const Fad c(27, 0, x * snap);
+    const Fad a = signedArea(clipConvexPolygon(lifted(c), square, tol));
+    EXPECT_NEAR(a.val(), value(x * snap), 1e-15) << x;
+    return a.dx(0);
+  };
+  for (double x : {1.25, 1.5, 1.75}) {
+    const double c0 = x * snap, h = 1e-3 * snap;
+    EXPECT_NEAR(derivative(x), (value(c0 + h) - value(c0 - h)) / (2 * h), 1e-5) << x;
+  }
+  // C1 at the zone's two ends: dA/dc is 0 (snapped) and -1 (not moved) there.
+  EXPECT_NEAR(derivative(1.0 + 1e-8), 0.0, 1e-6);
+  EXPECT_NEAR(derivative(2.0 - 1e-8), -1.0, 1e-6);
 }
 
 }  // namespace

@@ -27,9 +27,9 @@ double augmentedNormalMultiplier(double lambdaN, double weightedGap, double D, d
   return k * lambdaN + epsN * weightedGap / D;
 }
 
-ContactState almContactState(double lambdaN, double weightedGap, double D, double k, double epsN) {
-  return augmentedNormalMultiplier(lambdaN, weightedGap, D, k, epsN) <= 0.0 ? ContactState::Active
-                                                                           : ContactState::Inactive;
+ContactState almContactState(double lambdaN, double weightedGap, double D, double k, double epsN, double touching) {
+  return augmentedNormalMultiplier(lambdaN, weightedGap, D, k, epsN) <= epsN * touching ? ContactState::Active
+                                                                                       : ContactState::Inactive;
 }
 
 ContactState mpcContactState(bool wasActive, double lambdaN, double weightedGap) {

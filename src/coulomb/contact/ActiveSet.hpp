@@ -50,8 +50,14 @@ std::ostream& operator<<(std::ostream& out, ContactState state);
 /// Requires D > 0.
 double augmentedNormalMultiplier(double lambdaN, double weightedGap, double D, double k, double epsN);
 
-/// @brief ALM update rule (4.73/4.74): Active iff lambdā_n <= 0.
-ContactState almContactState(double lambdaN, double weightedGap, double D, double k, double epsN);
+/// @brief ALM update rule (4.73/4.74): Active iff lambdā_n <= eps_n × `touching`.
+/// `touching` (a length, default 0) counts surfaces that touch to within it
+/// as closed: surfaces that touch in the mesh have weighted gaps of ±1e-17,
+/// whose sign the last bits of the coordinates decide (and with it the
+/// first active set, differently in mm and in m). A node kept active by it
+/// carries at most eps_n × touching of tension.
+ContactState almContactState(double lambdaN, double weightedGap, double D, double k, double epsN,
+                             double touching = 0.0);
 
 /// @brief MPC update rule (no penalty, no augmentation): a tied node stays
 /// tied while its reaction is compressive (lambda_n <= 0, recovered from the

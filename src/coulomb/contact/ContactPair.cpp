@@ -367,7 +367,7 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
       }
       const ContactState rule = !frame.usable ? ContactState::Inactive
                                 : mpc       ? mpcContactState(previous == ContactState::Active, lambdaN, gap)
-                                            : almContactState(lambdaN, gap, D, k_, epsN_);
+                                            : almContactState(lambdaN, gap, D, k_, epsN_, touchingGap());
       state = nextState(rule, previous, updateSet, summary.violations);
       if (!frame.usable) state = ContactState::Inactive;
       if (state == ContactState::Inactive) lambdaN = 0;

@@ -21,7 +21,9 @@
 ///
 /// Prescribed DoFs keep their identity rows (nothing is added to them) and
 /// are left out as columns (the bulk tangent zeroes those columns too).
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -184,6 +186,11 @@ private:
   /// Stores the new state of owned node i (friction: an open node has no slip,
   /// and it is marked when it opens) and counts it into the summary.
   void settleState(std::size_t i, ContactState state, ContactState previous, PairIterationSummary& summary);
+  /// Surfaces within this length count as touching (closed): 1e-12 of the
+  /// slave face size, 1000 times the round-off of coordinates 1000 faces
+  /// from the origin (almContactState); the tension it lets an active node
+  /// keep, eps_n × 1e-12 h ~ 1e-12 E, is far below the contact tolerances.
+  double touchingGap() const { return 1e-12 * std::pow(referenceD_, 1.0 / std::max(1, dim_ - 1)); }
   /// The kernel parameters of a frictional pair.
   FrictionalParameters frictionalParameters() const;
   /// Sums the summary over ranks.

@@ -82,7 +82,7 @@ PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::
     ContactState state = previous;
     if (usable[i]) {
       for (int c = 0; c < dim_; ++c) lambdaN += lambda[i][c] * normals_[s].n[c];
-      state = nextState(almContactState(lambdaN, entry->gap, entry->D, k_, epsN_), previous, updateSet,
+      state = nextState(almContactState(lambdaN, entry->gap, entry->D, k_, epsN_, touchingGap()), previous, updateSet,
                         summary.violations);
     } else {
       state = ContactState::Inactive;

@@ -298,7 +298,9 @@ FrictionalNodeState<dim> frictionalState(const FrictionalNodeInput<dim>& in, Con
   out.lambdaN = terms.lambdaN;
   out.augmentedNormal = terms.augmentedNormal;
   for (int c = 0; c < dim; ++c) out.traction[c] = p.k * terms.lambda[c];
-  if (terms.augmentedNormal > 0.0) return out;  // (4.73/4.74): the gap zone
+  // (4.73/4.74): the gap zone; surfaces within the touching gap count as
+  // closed, as in almContactState.
+  if (terms.augmentedNormal > p.epsN * p.touchingGap) return out;
   out.threshold = frictionThreshold(p.law, terms.augmentedNormal);
   // (4.77): a stick node (or one that just closed) is tested with the full
   // augmentation (MPC: its reaction alone), a slipping one with the slip

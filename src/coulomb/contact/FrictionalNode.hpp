@@ -63,6 +63,9 @@ struct FrictionalParameters {
   /// A closing node whose weighted slip is at most roundOffSlip × D (a
   /// length: the round-off of the coordinates) sticks (frictionalState).
   double roundOffSlip = 0.0;
+  /// Surfaces closer than this length count as touching, i.e. closed
+  /// (frictionalState; almContactState says why).
+  double touchingGap = 0.0;
   FrictionLaw law;
   /// MPC: the same rows (ties), states without penalty: the normal decision
   /// and the threshold from the reaction k lambda_n of a tied node (the gap

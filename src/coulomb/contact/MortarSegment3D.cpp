@@ -297,12 +297,16 @@ MortarSegment3D<S, Mf, T> integrateSegment3D(const FaceNodes<S, T>& xs, const Fa
     };
 
     // 4.-6. Cells, Gauss points, back-projection, integration.
-    const Point2<T> centre = vertexAverage(clip);
-    const int cells = clip.size == 3 ? 1 : clip.size;
+    // The fan from the area centroid, triangles too: the cells change
+    // continuously where a vertex of the clip polygon splits in two or two
+    // merge (a fan from the vertex average jumps there, and with it the
+    // quadrature error of a non-affine Quad4 integrand).
+    const Point2<T> centre = areaCentroid(clip);
+    const int cells = clip.size;
     for (int c = 0; c < cells; ++c) {
-      const Point2<T>& q0 = clip.size == 3 ? clip.vertex[0] : centre;
-      const Point2<T>& q1 = clip.size == 3 ? clip.vertex[1] : clip.vertex[c];
-      const Point2<T>& q2 = clip.size == 3 ? clip.vertex[2] : clip.vertex[(c + 1) % clip.size];
+      const Point2<T>& q0 = centre;
+      const Point2<T>& q1 = clip.vertex[c];
+      const Point2<T>& q2 = clip.vertex[(c + 1) % clip.size];
       const T cellArea = 0.5 * ((q1[0] - q0[0]) * (q2[1] - q0[1]) - (q1[1] - q0[1]) * (q2[0] - q0[0]));
       for (int g = 0; g < 7; ++g) {
         const std::array<double, 3>& L = rule.L[g];

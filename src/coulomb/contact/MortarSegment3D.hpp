@@ -25,8 +25,9 @@
 ///  3. clip polygon = projected master ∩ projected slave (Sutherland–Hodgman,
 ///     PolygonClipping.hpp); an overlap of area below relativeTolerance × projected
 ///     slave area is "no contribution";
-///  4. integration cells: the clip polygon itself when it is a triangle, otherwise
-///     the fan of triangles from its vertex average;
+///  4. integration cells: the fan of triangles from the clip polygon's area
+///     centroid, triangles too (continuous where a vertex splits in two or
+///     two merge; the vertex average jumps there);
 ///  5. on each cell the 7-point degree-5 triangle rule (Radon); each Gauss point p
 ///     of the plane is mapped back to xi (slave) and xi^2 (master) by inverting the
 ///     projected face maps (affine for Tri3; Newton on the bilinear map for Quad4,

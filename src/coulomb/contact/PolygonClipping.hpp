@@ -49,6 +49,12 @@ T signedArea(const Polygon2<T>& polygon);
 template <typename T>
 Point2<T> vertexAverage(const Polygon2<T>& polygon);
 
+/// @brief Area centroid of a polygon (the vertex average if its area is 0):
+/// continuous in the vertices, also where a vertex splits in two or two
+/// merge (the vertex average jumps there): the fan centre of the mortar cells.
+template <typename T>
+Point2<T> areaCentroid(const Polygon2<T>& polygon);
+
 /// @brief Reverses the vertex order if the polygon is clockwise (decided on the double values).
 template <typename T>
 void makeCounterClockwise(Polygon2<T>& polygon);
@@ -68,13 +74,26 @@ void makeCounterClockwise(Polygon2<T>& polygon);
 /// At 10 (1e-9 of the face) both run (ctest: the matching patches and
 /// Bench.ironing_r1). Widening the merge and area tolerances as well broke the
 /// finite-difference checks of the contact tangent on distorted meshes.
+/// (Since 2026-12-02 a vertex in the band is put onto the edge's line, so
+/// that the jump at the band's edge is O(band²), and vertices near a clip
+/// edge are snapped onto it first, kSnapRelative.)
 constexpr double kOnEdgeFactor = 10.0;
+
+/// @brief Width of the zone about a clip edge in which subject vertices are
+/// moved onto its line, as a fraction of that edge's length: fully within
+/// one width of the segment, by a C2 fading fraction in the next
+/// (PolygonClipping.cpp, snapToEdgeLine: nearly collinear edges of two
+/// meshes are taken as one).
+constexpr double kSnapRelative = 1e-4;
 
 /// @brief subject ∩ clip by Sutherland–Hodgman.
 ///
 /// `clip` must be convex (either orientation); `subject` should be convex (a
 /// non-convex subject gives the correct area but may carry degenerate edges).
-/// The result keeps the orientation of `subject`. A vertex within
+/// The result keeps the orientation of `subject`. Subject vertices within
+/// 2 kSnapRelative clip-edge lengths of a clip edge (the segment) are first
+/// moved towards its line (snapToEdgeLine in the .cpp); a vertex outside an
+/// edge by less than the band goes onto its line. A vertex within
 /// kOnEdgeFactor × `tolerance` (a length) of the inner side of a clip edge
 /// counts as inside; consecutive vertices closer than `tolerance` are merged. A result with fewer than three
 /// vertices (disjoint, or touching along an edge or at a point) is returned
@@ -85,6 +104,7 @@ Polygon2<T> clipConvexPolygon(const Polygon2<T>& subject, const Polygon2<T>& cli
 
 extern template double signedArea<double>(const Polygon2<double>&);
 extern template Point2<double> vertexAverage<double>(const Polygon2<double>&);
+extern template Point2<double> areaCentroid<double>(const Polygon2<double>&);
 extern template void makeCounterClockwise<double>(Polygon2<double>&);
 extern template Polygon2<double> clipConvexPolygon<double>(const Polygon2<double>&, const Polygon2<double>&,
                                                            double);
