@@ -64,13 +64,35 @@ ContactRun runDeckText(const std::string& name, const std::string& text) {
   return runFile(dir + "/deck.xml", dir + "/result.e");
 }
 
+namespace {
+std::set<long long> punchNodes(const mesh::GlobalMesh& m) {
+  std::set<long long> punch;
+  for (const auto& block : m.blocks)
+    if (block.name == "punch") punch.insert(block.connectivity.begin(), block.connectivity.end());
+  return punch;
+}
+}  // namespace
+
+void writeMovedPatch2d(const std::string& path, const std::array<double, 2>& punchShift,
+                       const std::array<double, 2>& allShift, const std::string& title) {
+  if (worldComm()->getRank() == 0) {
+    mesh::GlobalMesh m = io::readExodus(shippedMesh("contact_patch2d.e"));
+    const std::set<long long> punch = punchNodes(m);
+    EXPECT_FALSE(punch.empty());
+    for (long long n : punch)
+      for (int c = 0; c < 2; ++c) m.coordinates[2 * n + c] += punchShift[c];
+    for (std::size_t i = 0; i < m.coordinates.size(); ++i) m.coordinates[i] += allShift[i % 2];
+    io::ExodusWriter writer(path, m, {}, {}, title);
+    writer.close();
+  }
+  worldComm()->barrier();
+}
+
 int writePatch3dWithPunchLeft(const std::string& path) {
   int onInterface = 0;
   if (worldComm()->getRank() == 0) {
     mesh::GlobalMesh m = io::readExodus(shippedMesh("contact_patch3d.e"));
-    std::set<long long> punch;
-    for (const auto& block : m.blocks)
-      if (block.name == "punch") punch.insert(block.connectivity.begin(), block.connectivity.end());
+    const std::set<long long> punch = punchNodes(m);
     mesh::NodeSet set;
     set.name = "punch_left";
     set.id = 100;

@@ -1,6 +1,7 @@
 #pragma once
 // Helpers of the contact deck tests (MPI): shipped decks edited as text,
 // runs with their Exodus results on rank 0.
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -47,6 +48,12 @@ ContactRun runDeckText(const std::string& name, const std::string& text);
 /// not in it); all ranks wait for it. Returns (rank 0) how many of those
 /// nodes lie on the interface z = 0.5.
 int writePatch3dWithPunchLeft(const std::string& path);
+
+/// Writes (rank 0) the shipped 2D contact patch mesh contact_patch2d.e with
+/// the punch's nodes moved by `punchShift` and then every node by
+/// `allShift` to `path`; all ranks wait for it.
+void writeMovedPatch2d(const std::string& path, const std::array<double, 2>& punchShift,
+                       const std::array<double, 2>& allShift, const std::string& title);
 
 double lastGlobal(const io::ExodusResults& r, const std::string& name);
 const std::vector<double>& lastNodal(const io::ExodusResults& r, const std::string& name);

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
-#include <set>
 #include <sstream>
 
 #include <Teuchos_TimeMonitor.hpp>
@@ -16,9 +15,7 @@
 #include "ContactTestSupport.hpp"
 #include "TestSupport.hpp"
 #include "coulomb/contact/ContactModel.hpp"
-#include "coulomb/io/ExodusReader.hpp"
 #include "coulomb/io/ExodusResults.hpp"
-#include "coulomb/io/ExodusWriter.hpp"
 
 namespace coulomb::test {
 namespace {
@@ -375,17 +372,7 @@ TEST(ContactPairs, PenetrationBeyondTheSearchRadiusWidensIt) {
 TEST(ContactPairs, InitialOverlapBeyondTheSearchRadiusIsFound) {
   const std::string dir = scratchDirectory("contact_initial_overlap");
   const std::string mesh = dir + "/overlap.e";
-  if (worldComm()->getRank() == 0) {
-    mesh::GlobalMesh m = io::readExodus(shippedMesh("contact_patch2d.e"));
-    std::set<long long> punch;
-    for (const auto& block : m.blocks)
-      if (block.name == "punch") punch.insert(block.connectivity.begin(), block.connectivity.end());
-    ASSERT_FALSE(punch.empty());
-    for (long long n : punch) m.coordinates[2 * n + 1] -= 0.15;
-    io::ExodusWriter writer(mesh, m, {}, {}, "2D patch, punch 0.15 into the base");
-    writer.close();
-  }
-  worldComm()->barrier();
+  writeMovedPatch2d(mesh, {0.0, -0.15}, {0.0, 0.0}, "2D patch, punch 0.15 into the base");
   ShippedDeck deck("contact_patch_2d", "contact_patch2d.e");
   deck.replace(shippedMesh("contact_patch2d.e"), mesh);
   auto run = runDeckText("contact_initial_overlap_run", deck.text);

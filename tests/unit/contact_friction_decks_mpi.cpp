@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <set>
 #include <vector>
 
 #include "ContactTestSupport.hpp"
@@ -470,21 +469,8 @@ TEST(FrictionFrameIndifference, ObjectiveSlipKeepsTheContactUnderRigidRotation) 
 // round-off: both forms pass this test.
 TEST(FrictionFrameIndifference, ObjectiveSlipIsTranslationInvariant) {
   const std::string dir = scratchDirectory("friction_translation");
-  auto writeMesh = [&](const std::string& path, double shift) {
-    if (worldComm()->getRank() != 0) return;
-    mesh::GlobalMesh m = io::readExodus(shippedMesh("contact_patch2d.e"));
-    std::set<long long> punch;
-    for (const auto& block : m.blocks)
-      if (block.name == "punch") punch.insert(block.connectivity.begin(), block.connectivity.end());
-    ASSERT_FALSE(punch.empty());
-    for (long long n : punch) m.coordinates[2 * n] += 0.25;
-    for (double& x : m.coordinates) x += shift;
-    io::ExodusWriter writer(path, m, {}, {}, "2D patch, punch overhanging by 0.25");
-    writer.close();
-  };
-  writeMesh(dir + "/here.e", 0.0);
-  writeMesh(dir + "/there.e", 1000.0);
-  worldComm()->barrier();
+  writeMovedPatch2d(dir + "/here.e", {0.25, 0.0}, {0.0, 0.0}, "2D patch, punch overhanging by 0.25");
+  writeMovedPatch2d(dir + "/there.e", {0.25, 0.0}, {1000.0, 1000.0}, "the same moved by (1000, 1000)");
   ShippedDeck deck("contact_patch_2d", "contact_patch2d.e");
   deck.replace("<Parameter name=\"Master\" type=\"string\" value=\"master\"/>",
                "<Parameter name=\"Master\" type=\"string\" value=\"master\"/>"
