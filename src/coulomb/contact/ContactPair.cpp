@@ -127,6 +127,7 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
   k_ = settings.scaleFactor;
   multiplierOffset_ = static_cast<GlobalOrdinal>(dim_) * mesh.global().numNodes();
   minimumD_ = 1e-8 * std::pow(h, dim_ - 1);
+  faceSize_ = h;
   referenceD_ = std::pow(h, dim_ - 1);
 
   prescribed_.assign(interface_->interfaceNodes().size(), {false, false, false});

@@ -21,9 +21,7 @@
 ///
 /// Prescribed DoFs keep their identity rows (nothing is added to them) and
 /// are left out as columns (the bulk tangent zeroes those columns too).
-#include <algorithm>
 #include <array>
-#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -190,7 +188,7 @@ private:
   /// slave face size, 1000 times the round-off of coordinates 1000 faces
   /// from the origin (almContactState); the tension it lets an active node
   /// keep, eps_n × 1e-12 h ~ 1e-12 E, is far below the contact tolerances.
-  double touchingGap() const { return 1e-12 * std::pow(referenceD_, 1.0 / std::max(1, dim_ - 1)); }
+  double touchingGap() const { return 1e-12 * faceSize_; }
   /// The kernel parameters of a frictional pair.
   FrictionalParameters frictionalParameters() const;
   /// Sums the summary over ranks.
@@ -205,7 +203,8 @@ private:
   std::unique_ptr<InterfaceGather> gather_;
   int dim_;
   double epsN_ = 0, k_ = 1, thickness_ = 1, radius_ = 0, minimumD_ = 0;
-  double referenceD_ = 1;  ///< h^(dim-1), h the mean slave face size: the scale of D_j
+  double faceSize_ = 1;    ///< h, the mean slave face size
+  double referenceD_ = 1;  ///< h^(dim-1): the scale of D_j
   GlobalOrdinal multiplierBlockOffset_ = 0;  ///< saddle-point form: first global index of z
   GlobalOrdinal multiplierOffset_ = 0;  ///< first global index of the lambda_n DoFs (saddle-point form)
   /// prescribed_[i][c]: component c of interface node i is a Dirichlet DoF.

@@ -123,7 +123,7 @@ FrictionalParameters ContactPair::frictionalParameters() const {
   p.slipThreshold = settings_.slipThreshold;
   // 1e-10 of the slave face size: far above the round-off of the
   // coordinates, far below any slip that matters.
-  p.roundOffSlip = 1e-10 * std::pow(referenceD_, 1.0 / std::max(1, dim_ - 1));
+  p.roundOffSlip = 1e-10 * faceSize_;
   p.touchingGap = touchingGap();
   p.law = settings_.friction;
   p.multiPointConstraint = settings_.formulation == ContactFormulation::MPC;

@@ -62,18 +62,6 @@ std::array<std::array<double, 3>, 4> faceCoordinates(const ContactFace& face, co
   return nodes;
 }
 
-/// Euclidean distance from a point to a box (0 inside).
-double boxDistance(const std::array<double, 3>& p, const Box& box) {
-  const double lo[3] = {bg::get<bg::min_corner, 0>(box), bg::get<bg::min_corner, 1>(box), bg::get<bg::min_corner, 2>(box)};
-  const double hi[3] = {bg::get<bg::max_corner, 0>(box), bg::get<bg::max_corner, 1>(box), bg::get<bg::max_corner, 2>(box)};
-  double d2 = 0.0;
-  for (int c = 0; c < 3; ++c) {
-    const double outside = std::max({lo[c] - p[c], 0.0, p[c] - hi[c]});
-    d2 += outside * outside;
-  }
-  return std::sqrt(d2);
-}
-
 /// A slave face with no candidate: are its nodes inside the master body,
 /// deeper than the radius reaches? For each node, the nearest master face
 /// (R-tree nearest query in increasing box distance, stopped once a box is
@@ -91,7 +79,7 @@ void recordUnpairedDepth(const ContactInterface& contact, const InterfaceConfigu
     double best = std::numeric_limits<double>::infinity();
     FaceProximity nearest;
     for (auto it = tree.qbegin(bgi::nearest(query, static_cast<unsigned>(tree.size()))); it != tree.qend(); ++it) {
-      if (boxDistance(point, it->first) > best) break;
+      if (bg::distance(query, it->first) > best) break;
       const ContactFace& master = masters[it->second];
       const FaceProximity near = faceProximity(x.dimension, master.numNodes, faceCoordinates(master, x), point);
       if (near.distance < best) {

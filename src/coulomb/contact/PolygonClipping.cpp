@@ -168,7 +168,7 @@ Polygon2<T> clipConvexPolygon(const Polygon2<T>& subject, const Polygon2<T>& cli
     const Point2<T>& a = clipPolygon.vertex[e];
     const Point2<T>& b = clipPolygon.vertex[(e + 1) % clipPolygon.size];
     const double edgeLength = distance(values(a), values(b));
-    if (kSnapRelative > 0.0 && edgeLength > 0.0) snapToEdgeLine(current, a, b, orientation);
+    if (edgeLength > 0.0) snapToEdgeLine(current, a, b, orientation);
     // Signed distance to the edge line, positive inside (on the double values);
     // the on-edge band outside is kOnEdgeFactor tolerances wide (see the header).
     auto inside = [&](const T& cross) { return orientation * valueOf(cross) >= -kOnEdgeFactor * tolerance * edgeLength; };
