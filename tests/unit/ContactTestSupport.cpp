@@ -88,6 +88,18 @@ void writeMovedPatch2d(const std::string& path, const std::array<double, 2>& pun
   worldComm()->barrier();
 }
 
+void writeGradedPatch2d(const std::string& path) {
+  if (worldComm()->getRank() == 0) {
+    mesh::GlobalMesh m = io::readExodus(shippedMesh("contact_patch2d.e"));
+    const std::set<long long> punch = punchNodes(m);
+    EXPECT_FALSE(punch.empty());
+    for (long long n : punch) m.coordinates[2 * n] *= m.coordinates[2 * n];
+    io::ExodusWriter writer(path, m, {}, {}, "2D patch, punch graded x -> x^2");
+    writer.close();
+  }
+  worldComm()->barrier();
+}
+
 int writePatch3dWithPunchLeft(const std::string& path) {
   int onInterface = 0;
   if (worldComm()->getRank() == 0) {

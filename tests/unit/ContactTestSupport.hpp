@@ -55,6 +55,11 @@ int writePatch3dWithPunchLeft(const std::string& path);
 void writeMovedPatch2d(const std::string& path, const std::array<double, 2>& punchShift,
                        const std::array<double, 2>& allShift, const std::string& title);
 
+/// Writes (rank 0) contact_patch2d.e with the punch's x mapped to x²
+/// (its 7 faces along the interface graded from 1/49 to 13/49 long); all
+/// ranks wait for it.
+void writeGradedPatch2d(const std::string& path);
+
 double lastGlobal(const io::ExodusResults& r, const std::string& name);
 const std::vector<double>& lastNodal(const io::ExodusResults& r, const std::string& name);
 

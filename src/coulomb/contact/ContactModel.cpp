@@ -59,11 +59,13 @@ bool ContactModel::needsNonsymmetricSolver() const {
 
 void ContactModel::beginStep() {
   updatesInStep_ = 0;
+  cycle_.clear();
   for (auto& pair : pairs_) pair->beginStep();
 }
 
 void ContactModel::restoreStep() {
   updatesInStep_ = 0;
+  cycle_.clear();
   for (auto& pair : pairs_) pair->restoreStep();
 }
 
@@ -95,6 +97,11 @@ void ContactModel::updatePairs(bool freezeSet, UpdatePair&& updatePair) {
   if (violations > 0) {
     summary_.activeSet.changed += static_cast<std::size_t>(violations);
     updatesInStep_ = 0;
+  }
+  if (!freezeSet) {
+    std::uint64_t signature = 0;
+    for (std::size_t p = 0; p < pairs_.size(); ++p) signature += (2 * p + 1) * pairSummaries_[p].setSignature;
+    cycle_.record(signature, summary_.activeSet.active, summary_.activeSet.changed + summary_.activeSet.stickSlipChanged);
   }
   summary_.normalResidual = std::sqrt(normal2);
   summary_.contactForce = std::sqrt(force2);

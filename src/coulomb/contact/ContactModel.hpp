@@ -13,6 +13,7 @@
 
 #include <Teuchos_RCP.hpp>
 
+#include "coulomb/contact/ActiveSetCycle.hpp"
 #include "coulomb/contact/ContactPair.hpp"
 #include "coulomb/contact/ContactSettings.hpp"
 #include "coulomb/core/TpetraTypes.hpp"
@@ -122,6 +123,10 @@ public:
   const std::vector<PairIterationSummary>& pairSummaries() const { return pairSummaries_; }
   /// Converged: active set unchanged at the last update and the normal test met.
   bool converged() const;
+  /// The sets of this step's iterates cycle (ActiveSetCycle): its period, or 0.
+  int cyclePeriod() const { return cycle_.period(); }
+  /// What cycles, for the console (empty when cyclePeriod() is 0).
+  std::string cycleDescription() const { return cycle_.describe(); }
 
   /// Owned-node fields for output, in nodalFieldNames() order.
   std::vector<std::string> nodalFieldNames() const;
@@ -143,6 +148,7 @@ private:
   std::vector<PairIterationSummary> pairSummaries_;
   ContactIterationSummary summary_;
   int updatesInStep_ = 0;
+  ActiveSetCycle cycle_;  ///< the sets of this step's iterates
   Teuchos::RCP<CrsMatrix> transform_;  ///< T - I (for the residual)
   ContactContributions contributions_;
   mutable linalg::MatrixSum tangentSum_;  ///< J = K + [...] with buffers (and J itself) reused per iterate

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <sstream>
 
@@ -10,6 +11,7 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "coulomb/contact/AutomaticPenalty.hpp"
 #include "coulomb/contact/CondensationFrame.hpp"
 #include "coulomb/contact/NodalContactLaw.hpp"
 #include "coulomb/core/Error.hpp"
@@ -57,23 +59,29 @@ Frame frameOf(int dim, const std::array<double, 3>& n, const std::array<bool, 3>
   return dim == 2 ? widen<2>(n, prescribed) : widen<3>(n, prescribed);
 }
 
-/// The contact modulus of the automatic penalty and the thickness of the
-/// first slave face's block. The contact modulus is the softer side's,
-/// min(E_s, E_m), E_s and E_m the largest Young's moduli of the blocks
-/// carrying the slave and the master faces: a node's gap meets one element
-/// layer of each body in series, which the softer one governs (within a
-/// factor 2). The larger of the two instead (before) made a stiff die on a
-/// soft slab (E ratio 10) ten times stiffer in its gap rows than the slab
-/// under them: each iterate's gap error of a fraction of the slab's
-/// compliance opened most of a sliding zone (tests/zoo/sliding_cylinder_2d:
-/// 5.1 Newton iterations per slide increment against 3.1; the harmonic mean,
-/// twice as stiff here, 3.9). The ALM answer does not depend on it
+/// The slave faces as the automatic penalty sees them (diameter in the
+/// reference configuration, the Young's modulus of the element), the
+/// master's contact modulus and the thickness of the first slave face's
+/// block. The master modulus is the largest E of the blocks carrying master
+/// faces; a node's contact modulus is the softer side's, min(E_s,j, E_m)
+/// (AutomaticPenalty.hpp): a node's gap meets one element layer of each body
+/// in series, which the softer one governs (within a factor 2). The larger
+/// of the two instead (before) made a stiff die on a soft slab (E ratio 10)
+/// ten times stiffer in its gap rows than the slab under them: each
+/// iterate's gap error of a fraction of the slab's compliance opened most of
+/// a sliding zone (tests/zoo/sliding_cylinder_2d: 5.1 Newton iterations per
+/// slide increment against 3.1; the harmonic mean, twice as stiff here,
+/// 3.9). The ALM answer does not depend on it
 /// (tests/regression/penalty_independence.cmake); what does — a pure
 /// penalty's penetration, the regularised stick of a driven direction — is
 /// unchanged for like materials.
-void bodyProperties(const mesh::Mesh& mesh, const ContactInterface& contact, const fem::ModelSettings& model,
-                    double& contactModulus, double& thickness) {
-  thickness = 1;
+struct PenaltyInput {
+  std::vector<PenaltyFace> slaveFaces;
+  double masterModulus = 0, thickness = 1, meanFaceSize = 0;
+};
+
+PenaltyInput penaltyInput(const mesh::Mesh& mesh, const ContactInterface& contact, const fem::ModelSettings& model) {
+  PenaltyInput in;
   const auto& global = mesh.global();
   auto materialOf = [&](long long element) -> const fem::MaterialParameters& {
     const auto& block = global.blocks[mesh.blockOfElement(element)];
@@ -82,34 +90,33 @@ void bodyProperties(const mesh::Mesh& mesh, const ContactInterface& contact, con
     COULOMB_REQUIRE(it != model.blockMaterials.end(), "deck: element block '" << name << "' has no material");
     return it->second;
   };
-  auto largestModulus = [&](const auto& faces) {
-    double E = 0;
-    for (const auto& face : faces) E = std::max(E, materialOf(face.element).youngsModulus);
-    return E;
-  };
-  const double slave = largestModulus(contact.slaveFaces()), master = largestModulus(contact.masterFaces());
-  contactModulus = slave > 0 && master > 0 ? std::min(slave, master) : std::max(slave, master);
-  if (mesh.dimension() == 2) thickness = materialOf(contact.slaveFaces().front().element).thickness;
-}
+  for (const auto& face : contact.masterFaces())
+    in.masterModulus = std::max(in.masterModulus, materialOf(face.element).youngsModulus);
+  if (mesh.dimension() == 2) in.thickness = materialOf(contact.slaveFaces().front().element).thickness;
 
-double meanSlaveFaceDiameter(const ContactInterface& contact) {
   const auto x = referenceConfiguration(contact);
   const int dim = contact.dimension();
   double sum = 0;
   for (const auto& face : contact.slaveFaces()) {
-    double diameter = 0;
-    for (int a = 0; a < face.numNodes; ++a)
+    PenaltyFace f;
+    f.numNodes = face.numNodes;
+    f.modulus = materialOf(face.element).youngsModulus;
+    for (int a = 0; a < face.numNodes; ++a) {
+      f.nodes[a] = face.interfaceIndex[a];
       for (int b = a + 1; b < face.numNodes; ++b) {
         double d2 = 0;
         for (int c = 0; c < dim; ++c) {
           const double d = x.point(face.interfaceIndex[a])[c] - x.point(face.interfaceIndex[b])[c];
           d2 += d * d;
         }
-        diameter = std::max(diameter, std::sqrt(d2));
+        f.diameter = std::max(f.diameter, std::sqrt(d2));
       }
-    sum += diameter;
+    }
+    sum += f.diameter;
+    in.slaveFaces.push_back(f);
   }
-  return sum / static_cast<double>(contact.slaveFaces().size());
+  in.meanFaceSize = sum / static_cast<double>(contact.slaveFaces().size());
+  return in;
 }
 
 }  // namespace
@@ -120,10 +127,9 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
   const std::string what = "Contact/Pairs/" + settings.name;
   interface_ = std::make_unique<ContactInterface>(mesh, settings.slave, settings.master, what);
   gather_ = std::make_unique<InterfaceGather>(*interface_, ownedDofMap);
-  double contactModulus = 0;
-  bodyProperties(mesh, *interface_, model, contactModulus, thickness_);
-  const double h = meanSlaveFaceDiameter(*interface_);
-  epsN_ = settings.penalty > 0 ? settings.penalty : defaultPenalty(contactModulus, h, settings.penaltyFactor);
+  const PenaltyInput penalty = penaltyInput(mesh, *interface_, model);
+  thickness_ = penalty.thickness;
+  const double h = penalty.meanFaceSize;
   k_ = settings.scaleFactor;
   multiplierOffset_ = static_cast<GlobalOrdinal>(dim_) * mesh.global().numNodes();
   minimumD_ = 1e-8 * std::pow(h, dim_ - 1);
@@ -140,6 +146,18 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
     }
   }
   const std::size_t owned = interface_->ownedSlaveNodes().size();
+  // eps_n per owned slave node: the deck's value, or the automatic one.
+  const auto automatic =
+      settings.penalty > 0 ? std::vector<double>{}
+                           : automaticNodalPenalty(penalty.slaveFaces, static_cast<int>(interface_->interfaceNodes().size()),
+                                                   penalty.masterModulus, settings.penaltyFactor,
+                                                   settings.formulation == ContactFormulation::Penalty
+                                                       ? PenaltySize::LocalFaces
+                                                       : PenaltySize::PairMean);
+  penalty_.assign(owned, settings.penalty);
+  for (std::size_t i = 0; i < owned; ++i)
+    if (settings.penalty <= 0)
+      penalty_[i] = automatic[interface_->interfaceNodeIndex(interface_->slaveNodes()[interface_->ownedSlaveNodes()[i]])];
   state_.assign(owned, ContactState::Inactive);
   lambdaN_.assign(owned, 0.0);
   pressure_.assign(owned, 0.0);
@@ -368,7 +386,7 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
       }
       const ContactState rule = !frame.usable ? ContactState::Inactive
                                 : mpc       ? mpcContactState(previous == ContactState::Active, lambdaN, gap)
-                                            : almContactState(lambdaN, gap, D, k_, epsN_, touchingGap());
+                                            : almContactState(lambdaN, gap, D, k_, penalty_[i], touchingGap());
       state = nextState(rule, previous, updateSet, summary.violations);
       if (!frame.usable) state = ContactState::Inactive;
       if (state == ContactState::Inactive) lambdaN = 0;
@@ -385,7 +403,7 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
       lambdaN_[i] = lambdaN;
       pressure_[i] = -k_ * lambdaN;
     } else {
-      pressure_[i] = state == ContactState::Active ? epsN_ * std::max(-gap, 0.0) / D : 0.0;
+      pressure_[i] = state == ContactState::Active ? penalty_[i] * std::max(-gap, 0.0) / D : 0.0;
       lambdaN_[i] = -pressure_[i] / k_;
     }
   }
@@ -399,7 +417,7 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
     const long long node = slaveNodes[s];
     const NodalMortarEntry* entry = mortarDerivatives_.find(node);
     if (entry == nullptr) continue;  // cannot happen: the node's faces were differentiated
-    const double D = entry->D, gap = entry->gap, lambdaN = lambdaN_[i];
+    const double D = entry->D, gap = entry->gap, lambdaN = lambdaN_[i], epsN = penalty_[i];
     const auto& n = normalDerivatives_[s].n;
     const auto& dn = normalDerivatives_[s].derivative;
     const Frame frame = frameOf(dim_, n, prescribed_[interface_->interfaceNodeIndex(node)]);
@@ -452,12 +470,12 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
             out.transform.push_back({row(master, c), row(node, frame.free[g]), scale * frame.a[frame.free[g]]});
         }
       // The gap row: sign eps_n t g~_j and its derivative.
-      const double scale = frame.gapRowSign * epsN_ * t;
+      const double scale = frame.gapRowSign * epsN * t;
       out.constraintResidual.push_back({row(node, frame.gapSlot), scale * gap});
       std::map<DofKey, double> gapRow;
       addScaled(gapRow, entry->dGap, scale);
       emitRow(out.constraint, row(node, frame.gapSlot), gapRow);
-      summary.normalResidual2 += (epsN_ * t * gap) * (epsN_ * t * gap);
+      summary.normalResidual2 += (epsN * t * gap) * (epsN * t * gap);
       // The same step as the uncondensed saddle-point system (lambda_n,j a
       // DoF of its own): its column -d f_c / d lambda_n, its row eps_n t g~.
       const GlobalOrdinal multiplier = multiplierOffset_ + node;
@@ -473,9 +491,9 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
           }
       }
       std::map<DofKey, double> saddleRow;
-      addScaled(saddleRow, entry->dGap, epsN_ * t);
+      addScaled(saddleRow, entry->dGap, epsN * t);
       emitRow(out.saddle.rows, multiplier, saddleRow);
-      out.saddle.gap.push_back({multiplier, epsN_ * t * gap});
+      out.saddle.gap.push_back({multiplier, epsN * t * gap});
       // K_c = -d f_c / dx with lambda_n frozen: slave f_j = k t lambda_n D n, master f_l = -k t lambda_n M_jl n.
       if (lambdaN != 0.0) {
         const double kl = k_ * t * lambdaN;
@@ -514,10 +532,10 @@ PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResi
         }
       };
       const NVec<3> n3{n[0], n[1], dim_ == 3 ? n[2] : 0.0};
-      penaltyRows(node, penaltySlaveForce<3>(n3, gap, epsN_), nullptr);
+      penaltyRows(node, penaltySlaveForce<3>(n3, gap, epsN), nullptr);
       for (const auto& [master, Mjl] : entry->M) {
         const auto dM = entry->dM.find(master);
-        penaltyRows(master, penaltyMasterForce<3>(n3, gap, D, Mjl, epsN_),
+        penaltyRows(master, penaltyMasterForce<3>(n3, gap, D, Mjl, epsN),
                     dM != entry->dM.end() ? &dM->second : nullptr);
       }
     }
@@ -546,15 +564,30 @@ void ContactPair::reduceSummary(PairIterationSummary& summary) const {
     summary.tangentialForce[c] = totals[10 + c];
   }
   summary.tangentialForce2 = totals[13];
-  long long counts[7] = {summary.violations,
+  // The set's signature: a sum of 40-bit hashes of (node, state), the same
+  // for any partition (ActiveSetCycle); 2^23 nodes cannot overflow it.
+  long long signature = 0;
+  const auto& slaveNodes = interface_->slaveNodes();
+  const auto& owned = interface_->ownedSlaveNodes();
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    std::uint64_t h = static_cast<std::uint64_t>(slaveNodes[owned[i]]) * 4 + static_cast<std::uint64_t>(state_[i]);
+    // splitmix64's finaliser: neighbouring nodes and states spread over all bits.
+    h += 0x9e3779b97f4a7c15ULL;
+    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
+    h ^= h >> 31;
+    signature += static_cast<long long>(h >> 24);
+  }
+  long long counts[8] = {summary.violations,
                          static_cast<long long>(summary.activeSet.nodes),
                          static_cast<long long>(summary.activeSet.active),
                          static_cast<long long>(summary.activeSet.inactive),
                          static_cast<long long>(summary.activeSet.changed),
                          static_cast<long long>(summary.activeSet.stick),
-                         static_cast<long long>(summary.activeSet.stickSlipChanged)};
-  long long countTotals[7];
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 7, counts, countTotals);
+                         static_cast<long long>(summary.activeSet.stickSlipChanged),
+                         signature};
+  long long countTotals[8];
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 8, counts, countTotals);
   summary.violations = countTotals[0];
   summary.activeSet.nodes = countTotals[1];
   summary.activeSet.active = countTotals[2];
@@ -562,6 +595,7 @@ void ContactPair::reduceSummary(PairIterationSummary& summary) const {
   summary.activeSet.changed = countTotals[4];
   summary.activeSet.stick = countTotals[5];
   summary.activeSet.stickSlipChanged = countTotals[6];
+  summary.setSignature = static_cast<std::uint64_t>(countTotals[7]);
 }
 
 std::vector<ContactPair::NodeOutput> ContactPair::nodeOutput() const {

@@ -22,6 +22,7 @@
 /// Prescribed DoFs keep their identity rows (nothing is added to them) and
 /// are left out as columns (the bulk tangent zeroes those columns too).
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -96,12 +97,15 @@ struct PairIterationSummary {
   /// Nodes whose frozen state (simplified semi-smooth Newton) disagrees with
   /// the update rule at this iterate; 0 when the set was updated.
   long long violations = 0;
+  /// A hash of every slave node's state (the same on every rank and for any
+  /// partition): equal sets have equal signatures (ActiveSetCycle).
+  std::uint64_t setSignature = 0;
 };
 
 class ContactPair {
 public:
-  /// Collective. `youngsModulus`: the largest E of the two bodies (automatic
-  /// penalty); `thickness`: the slave block's 2D thickness (1 in 3D).
+  /// Collective. The materials of `model` give the automatic penalty
+  /// (AutomaticPenalty.hpp) and the slave block's 2D thickness (1 in 3D).
   ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& ownedDofMap, const ContactPairSettings& settings,
               const fem::ModelSettings& model);
   ~ContactPair();
@@ -189,8 +193,10 @@ private:
   /// from the origin (almContactState); the tension it lets an active node
   /// keep, eps_n × 1e-12 h ~ 1e-12 E, is far below the contact tolerances.
   double touchingGap() const { return 1e-12 * faceSize_; }
-  /// The kernel parameters of a frictional pair.
+  /// The kernel parameters of a frictional pair (setNodeParameters adds the node's).
   FrictionalParameters frictionalParameters() const;
+  /// Owned node i's (global `node`) eps_n, eps_tau and friction coefficient into p.
+  void setNodeParameters(FrictionalParameters& p, std::size_t i, long long node) const;
   /// Sums the summary over ranks.
   void reduceSummary(PairIterationSummary& summary) const;
   GlobalOrdinal dofRow(long long node, int c) const { return static_cast<GlobalOrdinal>(dim_ * node + c); }
@@ -202,7 +208,10 @@ private:
   std::unique_ptr<ContactInterface> interface_;
   std::unique_ptr<InterfaceGather> gather_;
   int dim_;
-  double epsN_ = 0, k_ = 1, thickness_ = 1, radius_ = 0, minimumD_ = 0;
+  double k_ = 1, thickness_ = 1, radius_ = 0, minimumD_ = 0;
+  /// eps_n per owned slave node (ownedSlaveNodes() order): the deck's
+  /// `Penalty`, or the automatic one (AutomaticPenalty.hpp).
+  std::vector<double> penalty_;
   double faceSize_ = 1;    ///< h, the mean slave face size
   double referenceD_ = 1;  ///< h^(dim-1): the scale of D_j
   GlobalOrdinal multiplierBlockOffset_ = 0;  ///< saddle-point form: first global index of z

@@ -115,9 +115,7 @@ void ContactPair::settleState(std::size_t i, ContactState state, ContactState pr
 
 FrictionalParameters ContactPair::frictionalParameters() const {
   FrictionalParameters p;
-  p.k = k_;
-  p.epsN = epsN_;
-  p.epsTau = settings_.tangentFactor * epsN_;
+  p.k = k_;  // eps_n, eps_tau and mu are the node's: setNodeParameters
   p.thickness = thickness_;
   p.slipAugmentation = settings_.slipAugmentation;
   p.slipThreshold = settings_.slipThreshold;
@@ -129,6 +127,12 @@ FrictionalParameters ContactPair::frictionalParameters() const {
   p.multiPointConstraint = settings_.formulation == ContactFormulation::MPC;
   p.slipDirectionFromSlip = settings_.slipResetFrequency < 0;
   return p;
+}
+
+void ContactPair::setNodeParameters(FrictionalParameters& p, std::size_t i, long long node) const {
+  p.law.coefficient = settings_.frictionCoefficient(node);
+  p.epsN = penalty_[i];
+  p.epsTau = settings_.tangentFactor * penalty_[i];
 }
 
 std::array<double, 3> ContactPair::weightedSlip(const NodalMortarEntry& entry,
@@ -259,7 +263,7 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
     State decided;
     if (entry != nullptr && entry->D > minimumD_) {
       const auto w = weightedSlip(*entry, nullptr);
-      p.law.coefficient = settings_.frictionCoefficient(node);
+      setNodeParameters(p, i, node);
       decided =
           decide(dim_, residualAt(node), normals_[s].n, w, entry->D, entry->gap, extrasOf(i, *entry), previous, p);
       weightedSlip_[i] = w;
@@ -293,7 +297,7 @@ PairIterationSummary ContactPair::updateFrictional(const Vector& bulkResidual, b
     std::array<DerivativeRow, 3> dw;
     const auto w = weightedSlip(*entry, &dw);
     const auto rf = residualAt(node);
-    p.law.coefficient = settings_.frictionCoefficient(node);
+    setNodeParameters(p, i, node);
     const NodeExtras extras = extrasOf(i, *entry);
     const Rows k = rowsOf(dim_, rf, n, w, entry->D, entry->gap, extras, state_[i], p);
     if (!k.usable) continue;
@@ -457,7 +461,7 @@ PairIterationSummary ContactPair::updatePenaltyFrictional(bool updateSet, Contac
       const auto w = weightedSlip(*entry, nullptr);
       weightedSlip_[i] = w;
       for (int c = 0; c < 3; ++c) slipIncrement_[i][c] = -w[c] / entry->D;
-      p.law.coefficient = settings_.frictionCoefficient(node);
+      setNodeParameters(p, i, node);
       state = nextState(decide(normals_[s].n, w, i, entry->D, entry->gap, previous), previous, updateSet,
                         summary.violations);
       if (isActive(state)) {
@@ -484,7 +488,7 @@ PairIterationSummary ContactPair::updatePenaltyFrictional(bool updateSet, Contac
     std::array<DerivativeRow, 3> dw;
     const auto w = weightedSlip(*entry, &dw);
     const double D = entry->D;
-    p.law.coefficient = settings_.frictionCoefficient(node);
+    setNodeParameters(p, i, node);
     const PenaltyForce f = force(n, w, i, D, entry->gap, state_[i]);
     pressure_[i] = f.pressure;
     lambdaN_[i] = -f.pressure / k_;

@@ -62,9 +62,9 @@ PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::
   const auto& owned = interface_->ownedSlaveNodes();
   COULOMB_REQUIRE(z.size() == owned.size(), "internal: one multiplier per owned slave node");
   const double t = thickness_;
-  // z = (k / eps_n) lambda; rows R = (eps_n t / k) r_lambda.
-  const double toLambda = epsN_ / k_, rowScale = epsN_ * t / k_;
-  const AlmParameters parameters{k_, epsN_, epsN_};
+  // z_j = (k / eps_n,j) lambda_j; rows R_j = (eps_n,j t / k) r_lambda,j.
+  auto toLambda = [&](std::size_t i) { return penalty_[i] / k_; };
+  auto rowScale = [&](std::size_t i) { return penalty_[i] * t / k_; };
   PairIterationSummary summary;
   std::string failure;
 
@@ -74,7 +74,7 @@ PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::
     const int s = owned[i];
     const long long node = slaveNodes[s];
     const ContactState previous = state_[i];
-    for (int c = 0; c < 3; ++c) lambda[i][c] = toLambda * z[i][c];
+    for (int c = 0; c < 3; ++c) lambda[i][c] = toLambda(i) * z[i][c];
     const NodalMortarEntry* entry = mortar_.find(node);
     usable[i] = entry != nullptr && entry->D > minimumD_ &&
                 frameUsable(dim_, normals_[s].n, prescribed_[interface_->interfaceNodeIndex(node)]);
@@ -82,7 +82,7 @@ PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::
     ContactState state = previous;
     if (usable[i]) {
       for (int c = 0; c < dim_; ++c) lambdaN += lambda[i][c] * normals_[s].n[c];
-      state = nextState(almContactState(lambdaN, entry->gap, entry->D, k_, epsN_, touchingGap()), previous, updateSet,
+      state = nextState(almContactState(lambdaN, entry->gap, entry->D, k_, penalty_[i], touchingGap()), previous, updateSet,
                         summary.violations);
     } else {
       state = ContactState::Inactive;
@@ -121,7 +121,7 @@ PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::
     const long long node = slaveNodes[s];
     if (!usable[i]) {
       // No mortar entry (or not usable): the multiplier vanishes, R = t eps_n h^(dim-1) z.
-      const double scale = t * epsN_ * referenceD_;
+      const double scale = t * penalty_[i] * referenceD_;
       for (int c = 0; c < dim_; ++c) {
         out.multipliers.rows.push_back({multiplierDof(s, c), multiplierDof(s, c), scale});
         out.multipliers.residual.push_back({multiplierDof(s, c), scale * z[i][c]});
@@ -133,6 +133,8 @@ PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::
     COULOMB_REQUIRE(entry != nullptr, "internal: a differentiated node has its mortar entry");
     const auto& normal = withDerivatives ? normalDerivatives_[s] : normals_[s];
     const double D = entry->D;
+    const double toLambdaI = toLambda(i), rowScaleI = rowScale(i);
+    const AlmParameters parameters{k_, penalty_[i], penalty_[i]};
     const auto law =
         dim_ == 2 ? widenedResidual<2>(lambda[i], normal.n, entry->gap, D, parameters, state_[i])
                   : widenedResidual<3>(lambda[i], normal.n, entry->gap, D, parameters, state_[i]);
@@ -140,21 +142,21 @@ PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::
     // The multiplier rows: R, dR/dz, dR/du (through g~, n, D).
     for (int a = 0; a < dim_; ++a) {
       const GlobalOrdinal target = multiplierDof(s, a);
-      out.multipliers.residual.push_back({target, rowScale * law.r[a]});
+      out.multipliers.residual.push_back({target, rowScaleI * law.r[a]});
       for (int c = 0; c < dim_; ++c)
-        out.multipliers.rows.push_back({target, multiplierDof(s, c), rowScale * toLambda * law.dLambda[a][c]});
+        out.multipliers.rows.push_back({target, multiplierDof(s, c), rowScaleI * toLambdaI * law.dLambda[a][c]});
       if (!withDerivatives) continue;
-      emitDerivative(target, entry->dGap, rowScale * law.dGap[a]);
-      emitDerivative(target, entry->dD, rowScale * law.dD[a]);
+      emitDerivative(target, entry->dGap, rowScaleI * law.dGap[a]);
+      emitDerivative(target, entry->dD, rowScaleI * law.dD[a]);
       for (const auto& d : normal.derivative) {
         double value = 0;
         for (int c = 0; c < dim_; ++c) value += law.dNormal[a][c] * d.dn[c];
         if (value != 0.0 && !isPrescribed(d.node, d.component))
-          out.multipliers.rows.push_back({target, row(d.node, d.component), rowScale * value});
+          out.multipliers.rows.push_back({target, row(d.node, d.component), rowScaleI * value});
       }
     }
     if (state_[i] == ContactState::Active)
-      summary.normalResidual2 += (epsN_ * t * entry->gap) * (epsN_ * t * entry->gap);
+      summary.normalResidual2 += (penalty_[i] * t * entry->gap) * (penalty_[i] * t * entry->gap);
 
     // Forces on the bodies (NodalContactLaw): slave k t D lambda, master
     // -k t M_jl lambda; the displacement rows carry r - f_c, the columns
@@ -168,13 +170,13 @@ PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::
       }
       if (!isPrescribed(node, c)) {
         out.contactResidual.push_back({row(node, c), -force});
-        out.multipliers.columns.push_back({row(node, c), multiplierDof(s, c), -k_ * t * D * toLambda});
+        out.multipliers.columns.push_back({row(node, c), multiplierDof(s, c), -k_ * t * D * toLambdaI});
         if (withDerivatives) emitStiffness(row(node, c), entry->dD, -k_ * t * lambda[i][c]);
       }
       for (const auto& [master, Mjl] : entry->M) {
         if (isPrescribed(master, c)) continue;
         out.contactResidual.push_back({row(master, c), k_ * t * Mjl * lambda[i][c]});
-        out.multipliers.columns.push_back({row(master, c), multiplierDof(s, c), k_ * t * Mjl * toLambda});
+        out.multipliers.columns.push_back({row(master, c), multiplierDof(s, c), k_ * t * Mjl * toLambdaI});
         if (!withDerivatives) continue;
         const auto dM = entry->dM.find(master);
         if (dM != entry->dM.end()) emitStiffness(row(master, c), dM->second, k_ * t * lambda[i][c]);

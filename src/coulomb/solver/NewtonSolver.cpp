@@ -196,6 +196,26 @@ private:
 };
 
 /// Records one table row per iteration and prints it on rank 0.
+/// Fails the solve when the contact sets cycle (ActiveSetCycle.hpp): the
+/// step is cut back at once instead of at the iteration limit.
+class ActiveSetCycleTest : public NOX::StatusTest::Generic {
+public:
+  explicit ActiveSetCycleTest(const contact::ContactModel& contact) : contact_(contact) {}
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic&, NOX::StatusTest::CheckType) override {
+    status_ = contact_.cyclePeriod() > 0 ? NOX::StatusTest::Failed : NOX::StatusTest::Unconverged;
+    return status_;
+  }
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& stream, int indent) const override {
+    for (int i = 0; i < indent; ++i) stream << ' ';
+    return stream << status_ << " active-set cycle\n";
+  }
+
+private:
+  const contact::ContactModel& contact_;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+};
+
 class IterationTable : public NOX::Observer {
 public:
   IterationTable(NewtonReport& report, std::ostream* console, const contact::ContactModel* contact,
@@ -357,6 +377,7 @@ NewtonReport NewtonSolver::solve(Vector& u) {
   tests->addStatusTest(Teuchos::rcp(new FiniteValue));
   tests->addStatusTest(converged);
   tests->addStatusTest(Teuchos::rcp(new MaxIters(settings_.maximumIterations)));
+  if (contact_) tests->addStatusTest(Teuchos::rcp(new ActiveSetCycleTest(*contact_)));
 
   NewtonReport report;
   auto parameters = Teuchos::rcp(new Teuchos::ParameterList(*noxParameters_));
@@ -366,6 +387,7 @@ NewtonReport NewtonSolver::solve(Vector& u) {
   const auto status = solver->solve();
   report.converged = status == NOX::StatusTest::Converged;
   report.failure = model_->lastFailure();
+  if (!report.converged && contact_ && contact_->cyclePeriod() > 0) report.stopReason = contact_->cycleDescription();
 
   const auto& solution = dynamic_cast<const NOX::Thyra::Vector&>(solver->getSolutionGroup().getX());
   u.assign(*Extract::getConstTpetraVector(solution.getThyraRCPVector()));

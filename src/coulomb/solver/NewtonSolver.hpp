@@ -62,6 +62,9 @@ struct NewtonReport {
   bool converged = false;
   /// Why an iterate could not be evaluated (ModelEvaluator::lastFailure), or empty.
   std::string failure;
+  /// Why Newton stopped before its iteration limit without converging
+  /// (e.g. a cycling active set, contact::ActiveSetCycle), or empty.
+  std::string stopReason;
   std::vector<NewtonIteration> iterations;  ///< row 0: the initial residual
   int linearIterations() const;
   int preconditionerReuses() const;

@@ -221,7 +221,7 @@ RunSummary Simulation::run() {
   // the semi-smooth iterations of nodes entering it.
   Vector lastIncrement(dofs_->ownedMap());
   double lastStep = 0.0;
-  std::string rejected;  // the last rejected iterate's reason since the last converged step
+  std::string rejected;  // since the last converged step: the last rejected iterate, or why Newton stopped
   while (!steps.finished()) {
     const double time = steps.time(), next = steps.nextTime();
     if (console_)
@@ -252,10 +252,12 @@ RunSummary Simulation::run() {
     const int iterations = static_cast<int>(report.iterations.size()) - 1;
     if (!report.converged) {
       ++summary.cutbacks;
-      if (!report.failure.empty()) rejected = report.failure;
+      if (!report.failure.empty()) rejected = "an iterate was rejected: " + report.failure;
+      else if (!report.stopReason.empty()) rejected = report.stopReason;
       if (console_) {
         *console_ << "  not converged after " << iterations << " iterations";
         if (!report.failure.empty()) *console_ << ": an iterate was rejected (" << report.failure << ")";
+        else if (!report.stopReason.empty()) *console_ << ": " << report.stopReason;
         *console_ << "\n";
       }
       COULOMB_REQUIRE(steps.reject(),
@@ -265,7 +267,7 @@ RunSummary Simulation::run() {
                                   ? " after " + std::to_string(steps.consecutiveCutbacks()) + " cutbacks in a row"
                                   : std::string(", the smallest step (Final Time / Number of Steps / 2^cutbacks)"))
                           << " ('Load Stepping/Maximum Cutbacks' = " << settings_.maximumCutbacks << ")"
-                          << (rejected.empty() ? std::string() : "; an iterate was rejected: " + rejected)
+                          << (rejected.empty() ? std::string() : "; " + rejected)
                           << "; the result file keeps the converged steps up to t = " << time << " as "
                           << ResultWriter::partialPath(settings_.outputFile));
       if (console_) *console_ << "  cutting the step: next dt = " << steps.nextTime() - time << "\n";

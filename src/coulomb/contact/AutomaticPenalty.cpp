@@ -1,0 +1,36 @@
+#include "coulomb/contact/AutomaticPenalty.hpp"
+
+#include <algorithm>
+
+#include "coulomb/contact/NodalContactLaw.hpp"
+#include "coulomb/core/Error.hpp"
+
+namespace coulomb::contact {
+
+std::vector<double> automaticNodalPenalty(const std::vector<PenaltyFace>& faces, int numNodes, double masterModulus,
+                                          double factor, PenaltySize size) {
+  COULOMB_REQUIRE(numNodes >= 0, "internal: automatic penalty: negative node count");
+  std::vector<double> diameterSum(numNodes, 0.0), modulus(numNodes, 0.0);
+  std::vector<int> count(numNodes, 0);
+  double meanSize = 0;
+  for (const auto& face : faces) meanSize += face.diameter;
+  if (!faces.empty()) meanSize /= static_cast<double>(faces.size());
+  for (const auto& face : faces)
+    for (int a = 0; a < face.numNodes; ++a) {
+      const int j = face.nodes[a];
+      COULOMB_REQUIRE(j >= 0 && j < numNodes, "internal: automatic penalty: face node " << j << " out of range");
+      diameterSum[j] += face.diameter;
+      modulus[j] = std::max(modulus[j], face.modulus);
+      ++count[j];
+    }
+  std::vector<double> penalty(numNodes, 0.0);
+  for (int j = 0; j < numNodes; ++j) {
+    if (count[j] == 0) continue;
+    const double E = masterModulus > 0 && modulus[j] > 0 ? std::min(modulus[j], masterModulus)
+                                                         : std::max(modulus[j], masterModulus);
+    penalty[j] = defaultPenalty(E, size == PenaltySize::PairMean ? meanSize : diameterSum[j] / count[j], factor);
+  }
+  return penalty;
+}
+
+}  // namespace coulomb::contact

@@ -1,0 +1,54 @@
+#pragma once
+/// @file AutomaticPenalty.hpp
+/// @brief The automatic normal penalty of a contact pair, one value per slave
+/// node: eps_n,j = factor × E_j / h_j (issue 15, item 8; the seed's nodal
+/// INITIAL_PENALTY).
+///
+/// E_j per node: a slave surface over several materials has no single
+/// modulus. h_j depends on the formulation (PenaltySize):
+///  - Penalty: the node's own faces. eps_n is then part of the answer (the
+///    penetration p / eps_n), which should be the same fraction p / E of the
+///    local element everywhere; with one mean h a graded slave mesh sank a
+///    factor 13 deeper per face at its fine end than at its coarse one
+///    (ContactPairs.AutomaticPenaltyFollowsTheLocalFaceSize).
+///  - ALM and MPC: the pair's mean face size, as the seed's default. Here
+///    eps_n only weighs the gap against the multiplier in the active-set
+///    test and scales the gap rows; the converged answer does not depend on
+///    it (tests/regression/penalty_independence.cmake). Measured with the
+///    local size (tests/performance/README.md): every zoo case and benchmark
+///    the same or one iteration better, but sliding_cylinder_2d, whose slab
+///    is refined along the track (faces 0.125 against a mean of 0.21),
+///    169 Newton iterations against 141 — the stiffer gap rows let each
+///    extrapolated predictor open and close edge nodes on its gap error
+///    (the first iterate's residual 60 against 2.2).
+/// A pure kernel on plain data (no MPI, no mesh): ContactPair fills the faces.
+
+#include <array>
+#include <vector>
+
+namespace coulomb::contact {
+
+/// Which face size h_j a node's penalty takes (see above).
+enum class PenaltySize { LocalFaces, PairMean };
+
+/// One slave face as the automatic penalty sees it.
+struct PenaltyFace {
+  int numNodes = 0;                        ///< 2, 3 or 4
+  std::array<int, 4> nodes{-1, -1, -1, -1};  ///< node indices (0 … numNodes of the result - 1)
+  double diameter = 0;                     ///< largest distance between two of its nodes
+  double modulus = 0;                      ///< Young's modulus of its element
+};
+
+/// @brief eps_n,j = factor × E_j / h_j for nodes 0 … numNodes - 1, with h_j
+/// the mean diameter of the faces at node j (LocalFaces) or of all faces
+/// (PairMean), and E_j = min(E_s,j, E_master),
+/// E_s,j the largest modulus of the faces at j (the softer side governs the
+/// series of the two bodies' element layers; a node between a stiff and a
+/// soft slave element takes the stiff one, as a pair's single value did).
+/// When one of the two is not positive, the other. A node on no face gets 0.
+/// @throws coulomb::Error when a face at a node has a non-positive diameter
+/// or modulus, or factor ≤ 0 (defaultPenalty).
+std::vector<double> automaticNodalPenalty(const std::vector<PenaltyFace>& faces, int numNodes, double masterModulus,
+                                          double factor, PenaltySize size);
+
+}  // namespace coulomb::contact
