@@ -90,10 +90,10 @@ TEST(FrictionLaw, CoulombTrescaNone) {
   EXPECT_DOUBLE_EQ(frictionThreshold(tresca, -10.0), 7.0);  // independent of the pressure
   EXPECT_DOUBLE_EQ(frictionThreshold(tresca, -1000.0), 7.0);
   EXPECT_DOUBLE_EQ(frictionThreshold(FrictionLaw{}, -10.0), 0.0);
-  EXPECT_TRUE(FrictionLaw{}.pureSlip());
-  EXPECT_TRUE((FrictionLaw{FrictionLawType::Coulomb, 0.0, 0.0}.pureSlip()));
-  EXPECT_FALSE(coulomb.pureSlip());
-  EXPECT_FALSE(tresca.pureSlip());
+  EXPECT_TRUE(FrictionLaw{}.frictionless());
+  EXPECT_TRUE((FrictionLaw{FrictionLawType::Coulomb, 0.0, 0.0}.frictionless()));
+  EXPECT_FALSE(coulomb.frictionless());
+  EXPECT_FALSE(tresca.frictionless());
   EXPECT_STREQ(toString(FrictionLawType::Tresca), "Tresca");
 }
 
@@ -267,6 +267,31 @@ TEST(FrictionalNode, SlipDirectionFromTheSlip) {
   auto node2 = genericNode<2>();
   node2.lastSlip = {-0.02, 0.01};
   checkDerivatives<2>(node2, kSlip, p);
+}
+
+// Pure slip (the seed's FrictionalPureSlip): the slip rows take the
+// direction of this iterate's weighted slip (not the augmented multiplier's),
+// with its derivatives; a node below the cone slips all the same.
+TEST(FrictionalNode, PureSlipFollowsTheSlip) {
+  auto p = coulombParameters(0.4);
+  p.pureSlip = true;
+  FrictionalNodeInput<3> in;
+  in.normal = {0.0, 0.0, -1.0};
+  in.D = 0.5;
+  const double tD = p.thickness * in.D;
+  in.residual = {tD * 0.1, tD * 1.5, tD * 5.0};  // traction (0.1, 1.5) tangential, pressure 5: inside the cone (Θ 2)
+  in.slip = {0.02, 0.0, 0.0};                    // slipping along x
+  EXPECT_EQ(frictionalState<3>(in, ContactState::Stick, p).state, kSlip);
+  EXPECT_EQ(frictionalState<3>(in, kSlip, p).state, kSlip);
+  // Tangent slots x and y: b.r_F - t D Θ d with d = (±1, 0), Θ = μ p = 2: (tD (0.1 ∓ 2), tD 1.5).
+  const auto rows = frictionalRows<3>(in, kSlip, p);
+  EXPECT_NEAR(std::abs(rows.rows[0]), tD * 1.9, 1e-12);
+  EXPECT_NEAR(std::abs(rows.rows[1]), tD * 1.5, 1e-12);
+  p.pureSlip = false;  // the stick/slip rule: inside the cone, stick
+  EXPECT_EQ(frictionalState<3>(in, ContactState::Stick, p).state, ContactState::Stick);
+  p.pureSlip = true;
+  checkDerivatives<3>(genericNode<3>(), kSlip, p);
+  checkDerivatives<2>(genericNode<2>(), kSlip, p);
 }
 
 // The stick and slip groups of (4.78) and the tangential/normal ratio.

@@ -126,6 +126,7 @@ FrictionalParameters ContactPair::frictionalParameters() const {
   p.law = settings_.friction;
   p.multiPointConstraint = settings_.formulation == ContactFormulation::MPC;
   p.slipDirectionFromSlip = settings_.slipResetFrequency < 0;
+  p.pureSlip = settings_.pureSlip;
   return p;
 }
 

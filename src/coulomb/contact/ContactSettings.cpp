@@ -103,7 +103,9 @@ void addValidContactParameters(ParameterList& valid) {
            "objective slip only where the mortar operators changed by more than this (relative) over the step, "
            "else the non-objective one; 0: objective whenever possible",
            io::nonNegative());
-  pair.set("Pure Slip", d.pureSlip, "active nodes slide without friction whatever the law (automatic when mu = 0)");
+  pair.set("Pure Slip", d.pureSlip,
+           "every active node slides, with the law's threshold against its slip (never sticks); every mu = 0 is "
+           "frictionless");
 }
 
 ContactSettings parseContactSettings(const ParameterList& deck) {

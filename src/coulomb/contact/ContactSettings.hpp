@@ -3,6 +3,7 @@
 /// @brief The deck's "Contact" sublist as typed values: the contact pairs
 /// (slave and master side sets, formulation, penalty, scale factor,
 /// semi-smooth Newton mode, search) and the contact convergence tolerances.
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -68,15 +69,27 @@ struct ContactPairSettings {
   /// non-objective one (seed: OPERATOR_THRESHOLD). 0: objective whenever the
   /// operators of the last converged state exist.
   double operatorThreshold = 0.0;
-  bool pureSlip = false;              ///< every active node slides without friction (automatic when mu = 0)
+  /// The seed's FrictionalPureSlip: every active node is on the slip branch
+  /// and carries the law's threshold against its weighted slip (never
+  /// sticks). With every mu zero the pair is frictionless anyway. For
+  /// contacts that slide everywhere (forming, ironing): a node that does not
+  /// slip has no direction (friction_punch's pressing with Pure Slip stalls
+  /// in its first increment, |r_slip| 19 after 25 iterations).
+  bool pureSlip = false;
   /// Coulomb's mu per node from a nodal variable of the mesh file (deck
   /// 'Friction Coefficient Field'; loadFrictionFields fills the values,
   /// indexed by global node); empty: friction.coefficient everywhere.
   std::string frictionCoefficientField;
   std::vector<double> nodalFrictionCoefficients;
-  /// A frictional pair: a law with a tangential threshold, not in pure slip.
+  /// A frictional pair: a law with a tangential threshold. Every mu zero —
+  /// the pair's, or every value of its nodal field once loaded — is the
+  /// seed's automatic pure slip with no friction, i.e. frictionless contact.
   bool frictional() const {
-    return !pureSlip && (!friction.pureSlip() || !frictionCoefficientField.empty());
+    if (!friction.frictionless()) return true;
+    if (frictionCoefficientField.empty()) return false;
+    return nodalFrictionCoefficients.empty() ||
+           std::any_of(nodalFrictionCoefficients.begin(), nodalFrictionCoefficients.end(),
+                       [](double mu) { return mu != 0.0; });
   }
   /// mu of global node `node` (the field's value, else the pair's).
   double frictionCoefficient(long long node) const {

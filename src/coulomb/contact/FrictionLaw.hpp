@@ -24,9 +24,10 @@ struct FrictionLaw {
   FrictionLawType type = FrictionLawType::None;
   double coefficient = 0.0;  ///< mu >= 0 (Coulomb)
   double threshold = 0.0;    ///< Tresca threshold g > 0 [traction]
-  /// No tangential traction at all: the pair runs as pure slip (frictionless
-  /// sliding), the seed's automatic FrictionalPureSlip when every mu is zero.
-  bool pureSlip() const {
+  /// No tangential traction at all (no law, or Coulomb with mu = 0): the
+  /// pair runs frictionless, the seed's automatic FrictionalPureSlip when
+  /// every mu is zero (ContactPairSettings::frictional).
+  bool frictionless() const {
     return type == FrictionLawType::None || (type == FrictionLawType::Coulomb && coefficient == 0.0);
   }
 };

@@ -62,13 +62,13 @@ S normalize(const std::array<S, dim>& vO, const std::array<S, dim>& vU, int numD
 /// directions, and its unit direction (zero when the norm is zero).
 template <int dim, class S>
 S augmentedTangent(const NodeTerms<dim, S>& t, const S& D, double alpha, const FrictionalParameters& p,
-                   std::array<S, dim>& directionO, std::array<S, dim>& directionU) {
+                   std::array<S, dim>& directionO, std::array<S, dim>& directionU, double multiplierWeight = 1.0) {
   directionO = {};
   directionU = {};
   std::array<S, dim> v{};
   for (int i = 0; i < t.frame.numFree; ++i) {
     const int s = t.frame.free[i];
-    if (s != t.frame.gapSlot) v[s] = p.k * t.beta[s] + alpha * p.epsTau * t.slip[s] / D;
+    if (s != t.frame.gapSlot) v[s] = multiplierWeight * p.k * t.beta[s] + alpha * p.epsTau * t.slip[s] / D;
   }
   return normalize<dim, S>(v, t.trial, t.numDriven, directionO, directionU);
 }
@@ -97,6 +97,12 @@ void slipDirection(const NodeTerms<dim, S>& t, const S& D, const FrictionalNodeI
                    const FrictionalParameters& p, std::array<S, dim>& directionO, std::array<S, dim>& directionU) {
   augmentedTangent<dim, S>(t, D, p.slipAugmentation, p, directionO, directionU);
   if (p.slipDirectionFromSlip) fixedDirection<dim, S>(t, in.lastSlip, directionO, directionU);
+  if (p.pureSlip) {
+    // The seed's pure slip: the tangent of the weighted slip itself, with its
+    // derivatives (the multiplier left out of the augmentation).
+    std::array<S, dim> o{}, u{};
+    if (valueOf(augmentedTangent<dim, S>(t, D, 1.0, p, o, u, 0.0)) > 0.0) directionO = o, directionU = u;
+  }
 }
 
 /// Σ_s vO_s b_s + Σ_k vU_k u_k: a tangent vector in world components.
@@ -331,9 +337,15 @@ FrictionalNodeState<dim> frictionalState(const FrictionalNodeInput<dim>& in, Con
       fixedDirection<dim, double>(terms, in.lastSlip, o, u);
       for (int c = 0; c < dim; ++c) fixed = fixed || o[c] != 0.0 || u[c] != 0.0;
     }
+    if (p.pureSlip) {
+      out.state = kSlip;
+      return out;
+    }
     if (previous == kSlip && out.state == kSlip && !fixed &&
         slipReversed<dim>(terms, directionO, directionU, in, out.threshold, p))
       out.state = ContactState::Stick;
+  } else if (p.pureSlip) {
+    out.state = kSlip;
   } else {
     double slip2 = 0.0;
     for (int c = 0; c < dim; ++c) slip2 += in.slip[c] * in.slip[c];
@@ -430,6 +442,7 @@ ContactState penaltyFrictionalState(const PenaltyFrictionalInput<dim>& in, Conta
   std::array<double, dim> trial{}, traction{};
   penaltyTerms<dim, double>(in.normal, in.slip, in.D, in.gap, in.oldTraction, ContactState::Stick, p, pressure, trial,
                             traction, trialNorm, threshold);
+  if (p.pureSlip) return kSlip;  // the traction threshold × trial / |trial|: against the slip
   return stickSlipState(trialNorm, threshold, isActive(previous) ? previous : ContactState::Stick, p.slipThreshold);
 }
 

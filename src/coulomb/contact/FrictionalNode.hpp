@@ -77,6 +77,10 @@ struct FrictionalParameters {
   /// the weighted slip at the step start — instead of the augmented
   /// multiplier's; the augmented one where that slip is zero.
   bool slipDirectionFromSlip = false;
+  /// The seed's FrictionalPureSlip: an active node is always on the slip
+  /// branch, its direction that of its weighted slip w (the augmented
+  /// multiplier's where w is zero).
+  bool pureSlip = false;
 };
 
 /// Number of inputs of the derivatives: r, n, w (dim each), D, g~.
