@@ -1,0 +1,96 @@
+/// @file ContactPairOutput.cpp
+/// @brief What a pair reports after an update: its iteration summary summed
+/// over ranks (with the set's signature, ActiveSetCycle) and the per-node
+/// output fields.
+#include <cstdint>
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include "coulomb/contact/ContactPair.hpp"
+
+namespace coulomb::contact {
+
+void ContactPair::reduceSummary(PairIterationSummary& summary) const {
+  const auto& comm = *interface_->comm();
+  std::vector<double> values = {summary.normalResidual2, summary.contactForce2, summary.stickResidual2,
+                                summary.slipResidual2};
+  for (const auto* v : {&summary.slaveForce, &summary.normalForce, &summary.tangentialForce})
+    values.insert(values.end(), v->begin(), v->end());
+  values.push_back(summary.tangentialForce2);
+  std::vector<double> totals(values.size());
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(values.size()), values.data(), totals.data());
+  summary.normalResidual2 = totals[0];
+  summary.contactForce2 = totals[1];
+  summary.stickResidual2 = totals[2];
+  summary.slipResidual2 = totals[3];
+  for (int c = 0; c < 3; ++c) {
+    summary.slaveForce[c] = totals[4 + c];
+    summary.normalForce[c] = totals[7 + c];
+    summary.tangentialForce[c] = totals[10 + c];
+  }
+  summary.tangentialForce2 = totals[13];
+  // The set's signature: a sum of 40-bit hashes of (node, state), the same
+  // for any partition (ActiveSetCycle); 2^23 nodes cannot overflow it.
+  long long signature = 0;
+  const auto& slaveNodes = interface_->slaveNodes();
+  const auto& owned = interface_->ownedSlaveNodes();
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    std::uint64_t h = static_cast<std::uint64_t>(slaveNodes[owned[i]]) * 4 + static_cast<std::uint64_t>(state_[i]);
+    // splitmix64's finaliser: neighbouring nodes and states spread over all bits.
+    h += 0x9e3779b97f4a7c15ULL;
+    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
+    h ^= h >> 31;
+    signature += static_cast<long long>(h >> 24);
+  }
+  long long counts[8] = {summary.violations,
+                         static_cast<long long>(summary.activeSet.nodes),
+                         static_cast<long long>(summary.activeSet.active),
+                         static_cast<long long>(summary.activeSet.inactive),
+                         static_cast<long long>(summary.activeSet.changed),
+                         static_cast<long long>(summary.activeSet.stick),
+                         static_cast<long long>(summary.activeSet.stickSlipChanged),
+                         signature};
+  long long countTotals[8];
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 8, counts, countTotals);
+  summary.violations = countTotals[0];
+  summary.activeSet.nodes = countTotals[1];
+  summary.activeSet.active = countTotals[2];
+  summary.activeSet.inactive = countTotals[3];
+  summary.activeSet.changed = countTotals[4];
+  summary.activeSet.stick = countTotals[5];
+  summary.activeSet.stickSlipChanged = countTotals[6];
+  summary.setSignature = static_cast<std::uint64_t>(countTotals[7]);
+}
+
+std::vector<ContactPair::NodeOutput> ContactPair::nodeOutput() const {
+  std::vector<NodeOutput> out;
+  const auto& owned = interface_->ownedSlaveNodes();
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    NodeOutput o;
+    o.node = interface_->slaveNodes()[owned[i]];
+    o.state = state_[i];
+    o.pressure = pressure_[i];
+    if (const NodalMortarEntry* entry = mortar_.find(o.node)) {
+      o.weightedGap = entry->gap;
+      o.area = entry->D;
+      o.gap = entry->D > minimumD_ ? entry->gap / entry->D : 0.0;
+    }
+    if (static_cast<std::size_t>(owned[i]) < normals_.size()) o.normal = normals_[owned[i]].n;
+    for (int c = 0; c < 3; ++c) o.multiplier[c] = lambdaN_[i] * o.normal[c];
+    if (frictional()) {
+      double tn = 0;
+      for (int c = 0; c < 3; ++c) tn += traction_[i][c] * o.normal[c];
+      for (int c = 0; c < 3; ++c) {
+        o.multiplier[c] = traction_[i][c] / k_;
+        o.tangentialTraction[c] = traction_[i][c] - tn * o.normal[c];
+        o.weightedSlip[c] = weightedSlip_[i][c];
+        o.slip[c] = stepStartAccumulatedSlip_[i][c] + slipIncrement_[i][c];
+      }
+    }
+    out.push_back(o);
+  }
+  return out;
+}
+
+}  // namespace coulomb::contact
