@@ -240,19 +240,32 @@ TEST(FrictionalNode, MultiPointConstraintStatesComeFromReactionsAndGaps) {
   checkDerivatives<2>(genericNode<2>(), kSlip, mpc);
 }
 
+namespace {
+/// A node on the plane z = 0 (n = -z, D = 0.5) whose recovered traction is
+/// (tx, ty) tangential and pressure 5, slipping by `slip` at this iterate;
+/// tD = t D of p.
+FrictionalNodeInput<3> pressedNode(const FrictionalParameters& p, double tx, double ty,
+                                   const std::array<double, 3>& slip, double& tD) {
+  FrictionalNodeInput<3> in;
+  in.normal = {0.0, 0.0, -1.0};
+  in.D = 0.5;
+  tD = p.thickness * in.D;
+  in.residual = {tD * tx, tD * ty, tD * 5.0};
+  in.slip = slip;
+  return in;
+}
+}  // namespace
+
 // Slip Reset Frequency < 0: the slip rows take the direction of the node's
 // slip in the last converged step (fixed for the step), not the augmented
 // multiplier's; exact derivatives (through the frame, i.e. n).
 TEST(FrictionalNode, SlipDirectionFromTheSlip) {
   auto p = coulombParameters(0.4);
   p.slipDirectionFromSlip = true;
-  FrictionalNodeInput<3> in;
-  in.normal = {0.0, 0.0, -1.0};
-  in.D = 0.5;
-  const double tD = p.thickness * in.D;
-  in.residual = {tD * 1.0, tD * 1.5, tD * 5.0};  // traction (1, 1.5) tangential, pressure 5
-  in.lastSlip = {0.0, 0.03, 0.0};                 // the last step slipped along +y
-  in.slip = {0.02, 0.0, 0.0};                     // this iterate's slip: not the direction
+  double tD = 0;
+  // Traction (1, 1.5) tangential; this iterate's slip along x is not the direction.
+  auto in = pressedNode(p, 1.0, 1.5, {0.02, 0.0, 0.0}, tD);
+  in.lastSlip = {0.0, 0.03, 0.0};  // the last step slipped along +y
   const auto rows = frictionalRows<3>(in, kSlip, p);
   // Frame of n = -z: the gap slot is z; the tangent slots x and y carry
   // b.r_F - t D Θ d with d = (0, 1): (tD 1, tD (1.5 - 2)).
@@ -275,12 +288,9 @@ TEST(FrictionalNode, SlipDirectionFromTheSlip) {
 TEST(FrictionalNode, PureSlipFollowsTheSlip) {
   auto p = coulombParameters(0.4);
   p.pureSlip = true;
-  FrictionalNodeInput<3> in;
-  in.normal = {0.0, 0.0, -1.0};
-  in.D = 0.5;
-  const double tD = p.thickness * in.D;
-  in.residual = {tD * 0.1, tD * 1.5, tD * 5.0};  // traction (0.1, 1.5) tangential, pressure 5: inside the cone (Θ 2)
-  in.slip = {0.02, 0.0, 0.0};                    // slipping along x
+  double tD = 0;
+  // Traction (0.1, 1.5) tangential: inside the cone (Θ = μ 5 = 2); slipping along x.
+  const auto in = pressedNode(p, 0.1, 1.5, {0.02, 0.0, 0.0}, tD);
   EXPECT_EQ(frictionalState<3>(in, ContactState::Stick, p).state, kSlip);
   EXPECT_EQ(frictionalState<3>(in, kSlip, p).state, kSlip);
   // Tangent slots x and y: b.r_F - t D Θ d with d = (±1, 0), Θ = μ p = 2: (tD (0.1 ∓ 2), tD 1.5).

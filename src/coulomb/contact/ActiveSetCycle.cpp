@@ -5,6 +5,15 @@
 
 namespace coulomb::contact {
 
+std::uint64_t nodeStateHash(long long node, int state) {
+  std::uint64_t h = static_cast<std::uint64_t>(node) * 4 + static_cast<std::uint64_t>(state);
+  h += 0x9e3779b97f4a7c15ULL;
+  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
+  h ^= h >> 31;
+  return h >> 24;
+}
+
 void ActiveSetCycle::record(std::uint64_t signature, std::size_t active, std::size_t changed) {
   if (changed == 0) {
     history_.clear();

@@ -25,6 +25,12 @@
 
 namespace coulomb::contact {
 
+/// One slave node's share of a set signature: a 40-bit hash of (node,
+/// state), splitmix64's finaliser, so that neighbouring nodes and states
+/// spread over all bits. A set's signature is the sum over its nodes (the
+/// same for any partition; 2^23 nodes cannot overflow 63 bits).
+std::uint64_t nodeStateHash(long long node, int state);
+
 class ActiveSetCycle {
 public:
   /// Periods 2 … kLongestPeriod are detected (a period-1 "cycle" is a set

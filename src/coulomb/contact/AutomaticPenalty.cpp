@@ -7,14 +7,18 @@
 
 namespace coulomb::contact {
 
+double meanFaceDiameter(const std::vector<PenaltyFace>& faces) {
+  double sum = 0;
+  for (const auto& face : faces) sum += face.diameter;
+  return faces.empty() ? 0.0 : sum / static_cast<double>(faces.size());
+}
+
 std::vector<double> automaticNodalPenalty(const std::vector<PenaltyFace>& faces, int numNodes, double masterModulus,
                                           double factor, PenaltySize size) {
   COULOMB_REQUIRE(numNodes >= 0, "internal: automatic penalty: negative node count");
   std::vector<double> diameterSum(numNodes, 0.0), modulus(numNodes, 0.0);
   std::vector<int> count(numNodes, 0);
-  double meanSize = 0;
-  for (const auto& face : faces) meanSize += face.diameter;
-  if (!faces.empty()) meanSize /= static_cast<double>(faces.size());
+  const double meanSize = meanFaceDiameter(faces);
   for (const auto& face : faces)
     for (int a = 0; a < face.numNodes; ++a) {
       const int j = face.nodes[a];

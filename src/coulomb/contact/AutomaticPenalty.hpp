@@ -48,6 +48,9 @@ struct PenaltyFace {
 /// When one of the two is not positive, the other. A node on no face gets 0.
 /// @throws coulomb::Error when a face at a node has a non-positive diameter
 /// or modulus, or factor ≤ 0 (defaultPenalty).
+/// The mean diameter of `faces` (0 for none): the pair's face size h.
+double meanFaceDiameter(const std::vector<PenaltyFace>& faces);
+
 std::vector<double> automaticNodalPenalty(const std::vector<PenaltyFace>& faces, int numNodes, double masterModulus,
                                           double factor, PenaltySize size);
 

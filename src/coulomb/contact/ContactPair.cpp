@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <map>
 #include <sstream>
 
@@ -77,7 +76,7 @@ Frame frameOf(int dim, const std::array<double, 3>& n, const std::array<bool, 3>
 /// unchanged for like materials.
 struct PenaltyInput {
   std::vector<PenaltyFace> slaveFaces;
-  double masterModulus = 0, thickness = 1, meanFaceSize = 0;
+  double masterModulus = 0, thickness = 1;
 };
 
 PenaltyInput penaltyInput(const mesh::Mesh& mesh, const ContactInterface& contact, const fem::ModelSettings& model) {
@@ -96,7 +95,6 @@ PenaltyInput penaltyInput(const mesh::Mesh& mesh, const ContactInterface& contac
 
   const auto x = referenceConfiguration(contact);
   const int dim = contact.dimension();
-  double sum = 0;
   for (const auto& face : contact.slaveFaces()) {
     PenaltyFace f;
     f.numNodes = face.numNodes;
@@ -112,10 +110,8 @@ PenaltyInput penaltyInput(const mesh::Mesh& mesh, const ContactInterface& contac
         f.diameter = std::max(f.diameter, std::sqrt(d2));
       }
     }
-    sum += f.diameter;
     in.slaveFaces.push_back(f);
   }
-  in.meanFaceSize = sum / static_cast<double>(contact.slaveFaces().size());
   return in;
 }
 
@@ -129,7 +125,7 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
   gather_ = std::make_unique<InterfaceGather>(*interface_, ownedDofMap);
   const PenaltyInput penalty = penaltyInput(mesh, *interface_, model);
   thickness_ = penalty.thickness;
-  const double h = penalty.meanFaceSize;
+  const double h = meanFaceDiameter(penalty.slaveFaces);
   k_ = settings.scaleFactor;
   multiplierOffset_ = static_cast<GlobalOrdinal>(dim_) * mesh.global().numNodes();
   minimumD_ = 1e-8 * std::pow(h, dim_ - 1);
@@ -147,17 +143,15 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
   }
   const std::size_t owned = interface_->ownedSlaveNodes().size();
   // eps_n per owned slave node: the deck's value, or the automatic one.
-  const auto automatic =
-      settings.penalty > 0 ? std::vector<double>{}
-                           : automaticNodalPenalty(penalty.slaveFaces, static_cast<int>(interface_->interfaceNodes().size()),
-                                                   penalty.masterModulus, settings.penaltyFactor,
-                                                   settings.formulation == ContactFormulation::Penalty
-                                                       ? PenaltySize::LocalFaces
-                                                       : PenaltySize::PairMean);
   penalty_.assign(owned, settings.penalty);
-  for (std::size_t i = 0; i < owned; ++i)
-    if (settings.penalty <= 0)
+  if (settings.penalty <= 0) {
+    const auto automatic = automaticNodalPenalty(
+        penalty.slaveFaces, static_cast<int>(interface_->interfaceNodes().size()), penalty.masterModulus,
+        settings.penaltyFactor,
+        settings.formulation == ContactFormulation::Penalty ? PenaltySize::LocalFaces : PenaltySize::PairMean);
+    for (std::size_t i = 0; i < owned; ++i)
       penalty_[i] = automatic[interface_->interfaceNodeIndex(interface_->slaveNodes()[interface_->ownedSlaveNodes()[i]])];
+  }
   state_.assign(owned, ContactState::Inactive);
   lambdaN_.assign(owned, 0.0);
   pressure_.assign(owned, 0.0);

@@ -6,6 +6,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include "coulomb/contact/ActiveSetCycle.hpp"
 #include "coulomb/contact/ContactPair.hpp"
 
 namespace coulomb::contact {
@@ -29,20 +30,11 @@ void ContactPair::reduceSummary(PairIterationSummary& summary) const {
     summary.tangentialForce[c] = totals[10 + c];
   }
   summary.tangentialForce2 = totals[13];
-  // The set's signature: a sum of 40-bit hashes of (node, state), the same
-  // for any partition (ActiveSetCycle); 2^23 nodes cannot overflow it.
+  // The set's signature (ActiveSetCycle): the sum of its nodes' hashes.
   long long signature = 0;
-  const auto& slaveNodes = interface_->slaveNodes();
   const auto& owned = interface_->ownedSlaveNodes();
-  for (std::size_t i = 0; i < owned.size(); ++i) {
-    std::uint64_t h = static_cast<std::uint64_t>(slaveNodes[owned[i]]) * 4 + static_cast<std::uint64_t>(state_[i]);
-    // splitmix64's finaliser: neighbouring nodes and states spread over all bits.
-    h += 0x9e3779b97f4a7c15ULL;
-    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
-    h ^= h >> 31;
-    signature += static_cast<long long>(h >> 24);
-  }
+  for (std::size_t i = 0; i < owned.size(); ++i)
+    signature += static_cast<long long>(nodeStateHash(interface_->slaveNodes()[owned[i]], static_cast<int>(state_[i])));
   long long counts[8] = {summary.violations,
                          static_cast<long long>(summary.activeSet.nodes),
                          static_cast<long long>(summary.activeSet.active),

@@ -63,8 +63,6 @@ PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::
   COULOMB_REQUIRE(z.size() == owned.size(), "internal: one multiplier per owned slave node");
   const double t = thickness_;
   // z_j = (k / eps_n,j) lambda_j; rows R_j = (eps_n,j t / k) r_lambda,j.
-  auto toLambda = [&](std::size_t i) { return penalty_[i] / k_; };
-  auto rowScale = [&](std::size_t i) { return penalty_[i] * t / k_; };
   PairIterationSummary summary;
   std::string failure;
 
@@ -74,7 +72,7 @@ PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::
     const int s = owned[i];
     const long long node = slaveNodes[s];
     const ContactState previous = state_[i];
-    for (int c = 0; c < 3; ++c) lambda[i][c] = toLambda(i) * z[i][c];
+    for (int c = 0; c < 3; ++c) lambda[i][c] = penalty_[i] / k_ * z[i][c];
     const NodalMortarEntry* entry = mortar_.find(node);
     usable[i] = entry != nullptr && entry->D > minimumD_ &&
                 frameUsable(dim_, normals_[s].n, prescribed_[interface_->interfaceNodeIndex(node)]);
@@ -133,7 +131,7 @@ PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::
     COULOMB_REQUIRE(entry != nullptr, "internal: a differentiated node has its mortar entry");
     const auto& normal = withDerivatives ? normalDerivatives_[s] : normals_[s];
     const double D = entry->D;
-    const double toLambdaI = toLambda(i), rowScaleI = rowScale(i);
+    const double toLambda = penalty_[i] / k_, rowScale = penalty_[i] * t / k_;
     const AlmParameters parameters{k_, penalty_[i], penalty_[i]};
     const auto law =
         dim_ == 2 ? widenedResidual<2>(lambda[i], normal.n, entry->gap, D, parameters, state_[i])
@@ -142,17 +140,17 @@ PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::
     // The multiplier rows: R, dR/dz, dR/du (through g~, n, D).
     for (int a = 0; a < dim_; ++a) {
       const GlobalOrdinal target = multiplierDof(s, a);
-      out.multipliers.residual.push_back({target, rowScaleI * law.r[a]});
+      out.multipliers.residual.push_back({target, rowScale * law.r[a]});
       for (int c = 0; c < dim_; ++c)
-        out.multipliers.rows.push_back({target, multiplierDof(s, c), rowScaleI * toLambdaI * law.dLambda[a][c]});
+        out.multipliers.rows.push_back({target, multiplierDof(s, c), rowScale * toLambda * law.dLambda[a][c]});
       if (!withDerivatives) continue;
-      emitDerivative(target, entry->dGap, rowScaleI * law.dGap[a]);
-      emitDerivative(target, entry->dD, rowScaleI * law.dD[a]);
+      emitDerivative(target, entry->dGap, rowScale * law.dGap[a]);
+      emitDerivative(target, entry->dD, rowScale * law.dD[a]);
       for (const auto& d : normal.derivative) {
         double value = 0;
         for (int c = 0; c < dim_; ++c) value += law.dNormal[a][c] * d.dn[c];
         if (value != 0.0 && !isPrescribed(d.node, d.component))
-          out.multipliers.rows.push_back({target, row(d.node, d.component), rowScaleI * value});
+          out.multipliers.rows.push_back({target, row(d.node, d.component), rowScale * value});
       }
     }
     if (state_[i] == ContactState::Active)
@@ -170,13 +168,13 @@ PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::
       }
       if (!isPrescribed(node, c)) {
         out.contactResidual.push_back({row(node, c), -force});
-        out.multipliers.columns.push_back({row(node, c), multiplierDof(s, c), -k_ * t * D * toLambdaI});
+        out.multipliers.columns.push_back({row(node, c), multiplierDof(s, c), -k_ * t * D * toLambda});
         if (withDerivatives) emitStiffness(row(node, c), entry->dD, -k_ * t * lambda[i][c]);
       }
       for (const auto& [master, Mjl] : entry->M) {
         if (isPrescribed(master, c)) continue;
         out.contactResidual.push_back({row(master, c), k_ * t * Mjl * lambda[i][c]});
-        out.multipliers.columns.push_back({row(master, c), multiplierDof(s, c), k_ * t * Mjl * toLambdaI});
+        out.multipliers.columns.push_back({row(master, c), multiplierDof(s, c), k_ * t * Mjl * toLambda});
         if (!withDerivatives) continue;
         const auto dM = entry->dM.find(master);
         if (dM != entry->dM.end()) emitStiffness(row(master, c), dM->second, k_ * t * lambda[i][c]);

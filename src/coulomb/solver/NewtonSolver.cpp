@@ -195,7 +195,6 @@ private:
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
-/// Records one table row per iteration and prints it on rank 0.
 /// Fails the solve when the contact sets cycle (ActiveSetCycle.hpp): the
 /// step is cut back at once instead of at the iteration limit.
 class ActiveSetCycleTest : public NOX::StatusTest::Generic {
@@ -216,6 +215,7 @@ private:
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
+/// Records one table row per iteration and prints it on rank 0.
 class IterationTable : public NOX::Observer {
 public:
   IterationTable(NewtonReport& report, std::ostream* console, const contact::ContactModel* contact,
