@@ -22,6 +22,13 @@ void usage(std::ostream& out) {
          "       mpirun -np N coulomb DECK.xml\n";
 }
 
+/// A message on one console line.
+std::string oneLine(std::string message) {
+  for (auto& c : message)
+    if (c == '\n') c = ' ';
+  return message;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -57,12 +64,15 @@ int main(int argc, char** argv) {
     // Every rank throws the same coulomb::Error (see core/Parallel.hpp); one prints it.
     if (root) std::cerr << "coulomb: error: " << e.what() << std::endl;
     return 1;
+  } catch (const coulomb::InternalError& e) {
+    // A broken invariant: a bug, on this rank alone perhaps, so abort all.
+    std::cerr << "coulomb: internal error (a bug in Coulomb, please report it with the deck) on rank "
+              << comm->getRank() << ": " << oneLine(e.what()) << std::endl;
+    MPI_Abort(MPI_COMM_WORLD, 3);
   } catch (const std::exception& e) {
-    // Not an input problem Coulomb detected: a rank may be alone here, so abort all.
-    std::string message = e.what();
-    for (auto& c : message)
-      if (c == '\n') c = ' ';
-    std::cerr << "coulomb: internal error on rank " << comm->getRank() << ": " << message << std::endl;
+    // Neither an input problem Coulomb detected nor one of its checks (a
+    // library's exception, memory): a rank may be alone here, so abort all.
+    std::cerr << "coulomb: unexpected error on rank " << comm->getRank() << ": " << oneLine(e.what()) << std::endl;
     MPI_Abort(MPI_COMM_WORLD, 3);
   }
   return 0;

@@ -16,7 +16,7 @@ inline constexpr double kE = 210000, kNu = 0.3, kMu = 0.3;
 inline const double kPressure = kE * 0.01 / (1 - kNu * kNu);  // 2307.69
 inline const double kEpsXX = kNu / (1 - kNu) * 0.01;
 inline const double kShearModulus = kE / (2 * (1 + kNu));
-inline const double kSlip = 0.002;
+inline const double kImposedSlip = 0.002;  // the slide of the patch decks
 
 inline const std::string kCoulombLaw = "<Parameter name=\"Friction Law\" type=\"string\" value=\"Coulomb\"/>";
 

@@ -62,9 +62,9 @@ TEST(NodalLawComplementarity, ClosedFormRootOfSpringIsComplementary) {
     {
       const double ln = g0 / a;
       AlmNodeInput<3> in{scaled<3>(n, ln), n, 0.0, D};
-      if (almState<3>(in, p) == ContactState::Active) {
+      if (almState<3>(in, p) == ContactState::Slip) {
         ++consistent;
-        const auto res = almResidual<3>(in, p, ContactState::Active);
+        const auto res = almResidual<3>(in, p, ContactState::Slip);
         for (int i = 0; i < 3; ++i) EXPECT_NEAR(res.r[i], 0.0, 1e-14);
         EXPECT_LE(ln, 0.0) << "g0 " << g0;  // g~ = 0 and lambda_n <= 0
         EXPECT_GE(almPressure<3>(in, p), 0.0);
@@ -114,7 +114,7 @@ TEST(NodalLawComplementarity, TangentialMultiplierIsDrivenToZero) {
   const AlmParameters p{1.0, 10.0, 3.0};
   const NVec<2> n = unitNormal<2>();
   const NVec<2> t{0.8, 0.6};  // tangent
-  for (ContactState s : {ContactState::Active, ContactState::Inactive}) {
+  for (ContactState s : {ContactState::Slip, ContactState::Inactive}) {
     NVec<2> lam{};
     for (int i = 0; i < 2; ++i) lam[i] = -1.0 * n[i] + 0.5 * t[i];
     AlmNodeInput<2> in{lam, n, 0.0, 2.0};
@@ -134,7 +134,7 @@ TEST(NodalLawComplementarity, ResidualContinuousAtSwitch) {
     lam[0] += 0.3 * 3.0;  // some tangential part too: 0.3 (3, 2, 0), orthogonal to n
     lam[1] += 0.3 * 2.0;
     AlmNodeInput<3> in{lam, n, g, D};
-    const auto a = almResidual<3>(in, p, ContactState::Active);
+    const auto a = almResidual<3>(in, p, ContactState::Slip);
     const auto b = almResidual<3>(in, p, ContactState::Inactive);
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(a.r[i], b.r[i], 1e-12 * (1.0 + std::abs(a.r[i])));
   }
@@ -183,9 +183,9 @@ void checkResidualDerivatives(ContactState state) {
   compare(fdOf([](AlmNodeInput<dim>& x, double d) { x.D += d; }), [&](int i) { return an.dD[i]; }, "dD", 0);
 }
 
-TEST(NodalLawDerivatives, Active2D) { checkResidualDerivatives<2>(ContactState::Active); }
+TEST(NodalLawDerivatives, Active2D) { checkResidualDerivatives<2>(ContactState::Slip); }
 TEST(NodalLawDerivatives, Inactive2D) { checkResidualDerivatives<2>(ContactState::Inactive); }
-TEST(NodalLawDerivatives, Active3D) { checkResidualDerivatives<3>(ContactState::Active); }
+TEST(NodalLawDerivatives, Active3D) { checkResidualDerivatives<3>(ContactState::Slip); }
 TEST(NodalLawDerivatives, Inactive3D) { checkResidualDerivatives<3>(ContactState::Inactive); }
 
 TEST(NodalLawDerivatives, AlmForcesAgainstFiniteDifferences) {
@@ -219,31 +219,31 @@ TEST(NodalLawDerivatives, AlmForcesAgainstFiniteDifferences) {
 TEST(ActiveSetRule, ThresholdAtZeroAugmentedMultiplier) {
   // k lambda_n + eps g~ / D = 2 (-1.5) + 3 (1) / 1 = 0 exactly.
   EXPECT_EQ(augmentedNormalMultiplier(-1.5, 1.0, 1.0, 2.0, 3.0), 0.0);
-  EXPECT_EQ(almContactState(-1.5, 1.0, 1.0, 2.0, 3.0), ContactState::Active);
+  EXPECT_EQ(almContactState(-1.5, 1.0, 1.0, 2.0, 3.0), ContactState::Slip);
   EXPECT_EQ(almContactState(std::nextafter(-1.5, 0.0), 1.0, 1.0, 2.0, 3.0), ContactState::Inactive);
-  EXPECT_EQ(almContactState(std::nextafter(-1.5, -2.0), 1.0, 1.0, 2.0, 3.0), ContactState::Active);
+  EXPECT_EQ(almContactState(std::nextafter(-1.5, -2.0), 1.0, 1.0, 2.0, 3.0), ContactState::Slip);
   // D scales the gap: the same weighted gap on a larger weight is a smaller nodal gap.
-  EXPECT_EQ(almContactState(-1.0, 1.0, 2.0, 1.0, 1.0), ContactState::Active);    // -1 + 0.5 < 0
+  EXPECT_EQ(almContactState(-1.0, 1.0, 2.0, 1.0, 1.0), ContactState::Slip);    // -1 + 0.5 < 0
   EXPECT_EQ(almContactState(-1.0, 1.0, 0.5, 1.0, 1.0), ContactState::Inactive);  // -1 + 2 > 0
-  EXPECT_THROW(almContactState(-1.0, 1.0, 0.0, 1.0, 1.0), coulomb::Error);
+  EXPECT_THROW(almContactState(-1.0, 1.0, 0.0, 1.0, 1.0), coulomb::InternalError);
   // Penalty: threshold eps g~.
-  EXPECT_EQ(penaltyContactState(0.0), ContactState::Active);
-  EXPECT_EQ(penaltyContactState(-1e-300), ContactState::Active);
+  EXPECT_EQ(penaltyContactState(0.0), ContactState::Slip);
+  EXPECT_EQ(penaltyContactState(-1e-300), ContactState::Slip);
   EXPECT_EQ(penaltyContactState(1e-300), ContactState::Inactive);
   // Node-level wrapper uses n.lambda.
   const NVec<2> n = unitNormal<2>();
   AlmNodeInput<2> in{scaled<2>(n, -1.5), n, 1.0, 1.0};
-  EXPECT_EQ(almState<2>(in, AlmParameters{2.0, 3.0, 1.0}), ContactState::Active);
+  EXPECT_EQ(almState<2>(in, AlmParameters{2.0, 3.0, 1.0}), ContactState::Slip);
   in.lambda = scaled<2>(n, -1.4);
   EXPECT_EQ(almState<2>(in, AlmParameters{2.0, 3.0, 1.0}), ContactState::Inactive);
   EXPECT_EQ(static_cast<int>(ContactState::Inactive), 0);
-  EXPECT_EQ(static_cast<int>(ContactState::Active), 1);
+  EXPECT_EQ(static_cast<int>(ContactState::Slip), 1);
 }
 
 TEST(ActiveSetSummary, CountsChangesPrintsAndCompares) {
   using S = ContactState;
-  const std::vector<S> before{S::Active, S::Inactive, S::Inactive, S::Active};
-  const std::vector<S> now{S::Active, S::Active, S::Inactive, S::Inactive};
+  const std::vector<S> before{S::Slip, S::Inactive, S::Inactive, S::Slip};
+  const std::vector<S> now{S::Slip, S::Slip, S::Inactive, S::Inactive};
   const ActiveSetSummary s = summarizeActiveSet(now, before);
   EXPECT_EQ(s.nodes, 4u);
   EXPECT_EQ(s.active, 2u);
@@ -251,8 +251,8 @@ TEST(ActiveSetSummary, CountsChangesPrintsAndCompares) {
   EXPECT_EQ(s.changed, 2u);
   EXPECT_FALSE(s.unchanged());
   std::ostringstream out;
-  out << s << " " << S::Active;
-  EXPECT_EQ(out.str(), "nodes 4: active 2, inactive 2, changed 2 Active");
+  out << s << " " << S::Slip;
+  EXPECT_EQ(out.str(), "nodes 4: active 2, inactive 2, changed 2 Slip");
   const ActiveSetSummary same = summarizeActiveSet(now, now);
   EXPECT_TRUE(same.unchanged());
   EXPECT_NE(same, s);
@@ -261,7 +261,7 @@ TEST(ActiveSetSummary, CountsChangesPrintsAndCompares) {
   sum += same;
   EXPECT_EQ(sum.nodes, 8u);
   EXPECT_EQ(sum.changed, 2u);
-  EXPECT_THROW(summarizeActiveSet(now, std::vector<S>{S::Active}), coulomb::Error);
+  EXPECT_THROW(summarizeActiveSet(now, std::vector<S>{S::Slip}), coulomb::InternalError);
 }
 
 // ---------------------------------------------------------------------------
@@ -347,14 +347,14 @@ TEST(NodalLawPenalty, ContinuousAtZeroGapAndDerivativesMatchFiniteDifferences) {
 TEST(NodalLawPenalty, DefaultPenaltyIsEOverH) {
   EXPECT_DOUBLE_EQ(defaultPenalty(210e9, 0.01), 210e11);
   EXPECT_DOUBLE_EQ(defaultPenalty(1.0, 0.5, 10.0), 20.0);
-  EXPECT_THROW(defaultPenalty(0.0, 1.0), coulomb::Error);
-  EXPECT_THROW(defaultPenalty(1.0, -1.0), coulomb::Error);
-  EXPECT_THROW(defaultPenalty(1.0, 1.0, 0.0), coulomb::Error);
-  EXPECT_THROW(almResidual<2>(AlmNodeInput<2>{{}, unitNormal<2>(), 0.0, 0.0}, AlmParameters{}, ContactState::Active),
-               coulomb::Error);
+  EXPECT_THROW(defaultPenalty(0.0, 1.0), coulomb::InternalError);
+  EXPECT_THROW(defaultPenalty(1.0, -1.0), coulomb::InternalError);
+  EXPECT_THROW(defaultPenalty(1.0, 1.0, 0.0), coulomb::InternalError);
+  EXPECT_THROW(almResidual<2>(AlmNodeInput<2>{{}, unitNormal<2>(), 0.0, 0.0}, AlmParameters{}, ContactState::Slip),
+               coulomb::InternalError);
   EXPECT_THROW(almResidual<2>(AlmNodeInput<2>{{}, unitNormal<2>(), 0.0, 1.0}, AlmParameters{1.0, -1.0, 1.0},
-                              ContactState::Active),
-               coulomb::Error);
+                              ContactState::Slip),
+               coulomb::InternalError);
 }
 
 }  // namespace

@@ -12,8 +12,8 @@ const char* toString(ContactState state) {
   switch (state) {
     case ContactState::Inactive:
       return "Inactive";
-    case ContactState::Active:
-      return "Active";
+    case ContactState::Slip:
+      return "Slip";
     case ContactState::Stick:
       return "Stick";
   }
@@ -23,22 +23,22 @@ const char* toString(ContactState state) {
 std::ostream& operator<<(std::ostream& out, ContactState state) { return out << toString(state); }
 
 double augmentedNormalMultiplier(double lambdaN, double weightedGap, double D, double k, double epsN) {
-  COULOMB_REQUIRE(D > 0.0, "contact: nodal mortar weight D_j must be > 0, got " << D);
+  COULOMB_CHECK(D > 0.0, "contact: nodal mortar weight D_j must be > 0, got " << D);
   return k * lambdaN + epsN * weightedGap / D;
 }
 
 ContactState almContactState(double lambdaN, double weightedGap, double D, double k, double epsN, double touching) {
-  return augmentedNormalMultiplier(lambdaN, weightedGap, D, k, epsN) <= epsN * touching ? ContactState::Active
+  return augmentedNormalMultiplier(lambdaN, weightedGap, D, k, epsN) <= epsN * touching ? ContactState::Slip
                                                                                        : ContactState::Inactive;
 }
 
 ContactState mpcContactState(bool wasActive, double lambdaN, double weightedGap) {
   const double decisive = wasActive ? lambdaN : weightedGap;
-  return decisive <= 0.0 ? ContactState::Active : ContactState::Inactive;
+  return decisive <= 0.0 ? ContactState::Slip : ContactState::Inactive;
 }
 
 ContactState penaltyContactState(double weightedGap) {
-  return weightedGap <= 0.0 ? ContactState::Active : ContactState::Inactive;
+  return weightedGap <= 0.0 ? ContactState::Slip : ContactState::Inactive;
 }
 
 ContactState stickSlipState(double tangentNorm, double threshold, ContactState previous, double slipThreshold) {
@@ -47,8 +47,8 @@ ContactState stickSlipState(double tangentNorm, double threshold, ContactState p
   // rigidly) stays stick: the decision must not depend on the last bits,
   // which differ with the rank count.
   constexpr double kRoundOff = 1e-10;
-  const double limit = previous == kSlip ? (1.0 - slipThreshold) * threshold : threshold * (1.0 + kRoundOff);
-  return tangentNorm > limit ? kSlip : ContactState::Stick;
+  const double limit = previous == ContactState::Slip ? (1.0 - slipThreshold) * threshold : threshold * (1.0 + kRoundOff);
+  return tangentNorm > limit ? ContactState::Slip : ContactState::Stick;
 }
 
 ActiveSetSummary& ActiveSetSummary::operator+=(const ActiveSetSummary& other) {
@@ -80,7 +80,7 @@ std::ostream& operator<<(std::ostream& out, const ActiveSetSummary& summary) {
 
 ActiveSetSummary summarizeActiveSet(const std::vector<ContactState>& current,
                                     const std::vector<ContactState>& previous) {
-  COULOMB_REQUIRE(previous.empty() || previous.size() == current.size(),
+  COULOMB_CHECK(previous.empty() || previous.size() == current.size(),
                   "contact: active set sizes differ (" << current.size() << " nodes now, " << previous.size()
                                                        << " before)");
   ActiveSetSummary s;

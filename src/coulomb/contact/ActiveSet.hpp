@@ -33,16 +33,16 @@
 namespace coulomb::contact {
 
 /// @brief Contact state of one slave node; the values are the output codes
-/// (contact_state): 0 inactive, 1 active and sliding (frictionless contact,
-/// or the slip branch of a frictional law), 2 active and sticking.
-enum class ContactState : int { Inactive = 0, Active = 1, Stick = 2 };
-/// The frictional name of the sliding active state.
-inline constexpr ContactState kSlip = ContactState::Active;
+/// (contact_state): 0 open, 1 in contact and sliding (every active node of a
+/// frictionless pair: the seed's pure slip without friction; the slip branch
+/// of a frictional law), 2 in contact and sticking. "In contact" is
+/// isActive(), never a comparison with one of the two active states.
+enum class ContactState : int { Inactive = 0, Slip = 1, Stick = 2 };
 
 /// Active (sliding or sticking).
 inline bool isActive(ContactState state) { return state != ContactState::Inactive; }
 
-/// "Inactive" / "Active" / "Stick".
+/// "Inactive" / "Slip" / "Stick".
 const char* toString(ContactState state);
 std::ostream& operator<<(std::ostream& out, ContactState state);
 
@@ -115,7 +115,7 @@ std::ostream& operator<<(std::ostream& out, const ActiveSetSummary& summary);
 
 /// @brief Summary of `current` against `previous` (same node order). An empty
 /// `previous` counts every node as unchanged; otherwise the sizes must match
-/// (throws coulomb::Error).
+/// (throws coulomb::InternalError).
 ActiveSetSummary summarizeActiveSet(const std::vector<ContactState>& current,
                                     const std::vector<ContactState>& previous);
 

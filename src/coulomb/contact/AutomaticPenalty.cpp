@@ -15,14 +15,15 @@ double meanFaceDiameter(const std::vector<PenaltyFace>& faces) {
 
 std::vector<double> automaticNodalPenalty(const std::vector<PenaltyFace>& faces, int numNodes, double masterModulus,
                                           double factor, PenaltySize size) {
-  COULOMB_REQUIRE(numNodes >= 0, "internal: automatic penalty: negative node count");
+  COULOMB_CHECK(numNodes >= 0, "automatic penalty: negative node count");
   std::vector<double> diameterSum(numNodes, 0.0), modulus(numNodes, 0.0);
   std::vector<int> count(numNodes, 0);
   const double meanSize = meanFaceDiameter(faces);
   for (const auto& face : faces)
     for (int a = 0; a < face.numNodes; ++a) {
       const int j = face.nodes[a];
-      COULOMB_REQUIRE(j >= 0 && j < numNodes, "internal: automatic penalty: face node " << j << " out of range");
+      COULOMB_CHECK(j >= 0 && j < numNodes, "automatic penalty: face node " << j << " out of range");
+      COULOMB_REQUIRE(face.diameter > 0.0, "automatic penalty: a slave face of zero size (its nodes coincide)");
       diameterSum[j] += face.diameter;
       modulus[j] = std::max(modulus[j], face.modulus);
       ++count[j];

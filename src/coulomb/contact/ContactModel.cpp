@@ -24,7 +24,7 @@ ContactModel::ContactModel(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>
                            const ContactSettings& settings, const fem::ModelSettings& model)
     : settings_(settings), dim_(mesh.dimension()), map_(ownedDofMap) {
   for (const auto& pair : settings.pairs)
-    pairs_.push_back(std::make_unique<ContactPair>(mesh, ownedDofMap, pair, model));
+    pairs_.push_back(std::make_unique<ContactPair>(mesh, ownedDofMap, pair, model, settings.systemForm));
   pairSummaries_.resize(pairs_.size());
   if (!saddlePoint()) return;
   // The multiplier block: dim unknowns per slave node of each pair, numbered
@@ -130,7 +130,7 @@ void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool free
 }
 
 void ContactModel::condenseResidual(Vector& residual) const {
-  COULOMB_REQUIRE(!saddlePoint(), "internal: condenseResidual in the saddle-point form");
+  COULOMB_CHECK(!saddlePoint(), "condenseResidual in the saddle-point form");
   if (!contributes_) return;
   linalg::addEntries(contributions_.contactResidual, residual);
   Vector copy(residual, Teuchos::Copy);
@@ -145,7 +145,7 @@ void ContactModel::subtractPrescribedForces(Vector& reactions) const {
 }
 
 Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMatrix>& bulkTangent) const {
-  COULOMB_REQUIRE(!saddlePoint(), "internal: condensedTangent in the saddle-point form");
+  COULOMB_CHECK(!saddlePoint(), "condensedTangent in the saddle-point form");
   if (!contributes_) return bulkTangent;
   static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact condensed tangent");
   Teuchos::TimeMonitor scope(*timer);
@@ -184,8 +184,8 @@ Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMat
   for (const auto& [targetRow, terms] : transformRows) {
     for (const auto& [column, coefficient] : terms) {
       const LocalOrdinal row = map_->getLocalElement(column);
-      COULOMB_REQUIRE(row != Teuchos::OrdinalTraits<LocalOrdinal>::invalid(),
-                      "internal: a condensation coefficient refers to a DoF this rank does not own");
+      COULOMB_CHECK(row != Teuchos::OrdinalTraits<LocalOrdinal>::invalid(),
+                      "a condensation coefficient refers to a DoF this rank does not own");
       Teuchos::ArrayView<const LocalOrdinal> indices;
       Teuchos::ArrayView<const double> values;
       bulkTangent->getLocalRowView(row, indices, values);

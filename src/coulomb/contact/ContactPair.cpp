@@ -11,52 +11,12 @@
 #include <Tpetra_Vector.hpp>
 
 #include "coulomb/contact/AutomaticPenalty.hpp"
-#include "coulomb/contact/CondensationFrame.hpp"
-#include "coulomb/contact/NodalContactLaw.hpp"
 #include "coulomb/core/Error.hpp"
 #include "coulomb/core/Parallel.hpp"
 
 namespace coulomb::contact {
 
 namespace {
-
-/// CondensationFrame of either dimension, widened to 3 components.
-struct Frame {
-  bool usable = false;
-  int numFree = 0;
-  std::array<int, 3> free{};
-  int gapSlot = -1;
-  double gapRowSign = 1, normFree = 0;
-  std::array<double, 3> a{};
-  std::array<std::array<double, 3>, 3> b{};
-};
-
-template <int dim>
-Frame widen(const std::array<double, 3>& n3, const std::array<bool, 3>& prescribed3) {
-  std::array<double, dim> n{};
-  std::array<bool, dim> prescribed{};
-  for (int c = 0; c < dim; ++c) {
-    n[c] = n3[c];
-    prescribed[c] = prescribed3[c];
-  }
-  const auto f = condensationFrame<dim>(n, prescribed);
-  Frame out;
-  out.usable = f.usable;
-  out.numFree = f.numFree;
-  for (int i = 0; i < f.numFree; ++i) out.free[i] = f.free[i];
-  out.gapSlot = f.gapSlot;
-  out.gapRowSign = f.gapRowSign;
-  out.normFree = f.normFree;
-  for (int c = 0; c < dim; ++c) {
-    out.a[c] = f.a[c];
-    for (int s = 0; s < dim; ++s) out.b[s][c] = f.b[s][c];
-  }
-  return out;
-}
-
-Frame frameOf(int dim, const std::array<double, 3>& n, const std::array<bool, 3>& prescribed) {
-  return dim == 2 ? widen<2>(n, prescribed) : widen<3>(n, prescribed);
-}
 
 /// The slave faces as the automatic penalty sees them (diameter in the
 /// reference configuration, the Young's modulus of the element), the
@@ -118,19 +78,20 @@ PenaltyInput penaltyInput(const mesh::Mesh& mesh, const ContactInterface& contac
 }  // namespace
 
 ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& ownedDofMap,
-                         const ContactPairSettings& settings, const fem::ModelSettings& model)
+                         const ContactPairSettings& settings, const fem::ModelSettings& model, ContactSystemForm form)
     : mesh_(mesh), dofMap_(ownedDofMap), settings_(settings), dim_(mesh.dimension()) {
   const std::string what = "Contact/Pairs/" + settings.name;
   interface_ = std::make_unique<ContactInterface>(mesh, settings.slave, settings.master, what);
   gather_ = std::make_unique<InterfaceGather>(*interface_, ownedDofMap);
   const PenaltyInput penalty = penaltyInput(mesh, *interface_, model);
-  thickness_ = penalty.thickness;
   const double h = meanFaceDiameter(penalty.slaveFaces);
-  k_ = settings.scaleFactor;
-  multiplierOffset_ = static_cast<GlobalOrdinal>(dim_) * mesh.global().numNodes();
+  constants_.settings = &settings_;
+  constants_.k = settings.scaleFactor;
+  constants_.thickness = penalty.thickness;
+  constants_.faceSize = h;
+  constants_.referenceD = std::pow(h, dim_ - 1);
+  formulation_ = makeFormulation(dim_, constants_, form);
   minimumD_ = 1e-8 * std::pow(h, dim_ - 1);
-  faceSize_ = h;
-  referenceD_ = std::pow(h, dim_ - 1);
 
   prescribed_.assign(interface_->interfaceNodes().size(), {false, false, false});
   for (const auto& condition : model.dirichlet) {
@@ -152,12 +113,9 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
     for (std::size_t i = 0; i < owned; ++i)
       penalty_[i] = automatic[interface_->interfaceNodeIndex(interface_->slaveNodes()[interface_->ownedSlaveNodes()[i]])];
   }
-  state_.assign(owned, ContactState::Inactive);
-  lambdaN_.assign(owned, 0.0);
-  pressure_.assign(owned, 0.0);
-  traction_.assign(owned, {0.0, 0.0, 0.0});
-  weightedSlip_ = slipIncrement_ = stepStartAccumulatedSlip_ = stepStartTraction_ = lastStepSlip_ = traction_;
-  slipDirection_ = stepStartSlipDirection_ = traction_;
+  nodes_.assign(owned, SlaveNodeState{});
+  accumulatedSlip_.assign(owned, {0.0, 0.0, 0.0});
+  lastStepSlip_ = accumulatedSlip_;
   beginStep();
 }
 
@@ -173,37 +131,30 @@ void ContactPair::beginStep() {
   // nodes that slipped (a sticking node's slip is round-off, an open one's
   // its approach); a retry keeps that of the converged step.
   if (!restored_)
-    for (std::size_t i = 0; i < state_.size(); ++i)
-      lastStepSlip_[i] = state_[i] == kSlip ? weightedSlip_[i] : std::array<double, 3>{0.0, 0.0, 0.0};
+    for (std::size_t i = 0; i < nodes_.size(); ++i)
+      lastStepSlip_[i] =
+          nodes_[i].state == ContactState::Slip ? nodes_[i].weightedSlip : std::array<double, 3>{0.0, 0.0, 0.0};
   restored_ = false;
-  for (std::size_t i = 0; i < state_.size(); ++i) {
-    for (int c = 0; c < 3; ++c) stepStartAccumulatedSlip_[i][c] += slipIncrement_[i][c];
-    slipIncrement_[i] = weightedSlip_[i] = {0.0, 0.0, 0.0};
-  }
-  stepStartTraction_ = traction_;
   // Slip reset policy: slipping nodes start the step as stick every n-th step.
   const int n = settings_.slipResetFrequency;
-  if (frictional() && n > 0 && steps_ % n == 0)
-    for (auto& state : state_)
-      if (state == kSlip) state = ContactState::Stick;
-  for (std::size_t i = 0; i < state_.size(); ++i)
-    if (state_[i] != kSlip) slipDirection_[i] = {0.0, 0.0, 0.0};
-  stepStartSlipDirection_ = slipDirection_;
+  const bool reset = frictional() && n > 0 && steps_ % n == 0;
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    auto& node = nodes_[i];
+    for (int c = 0; c < 3; ++c) accumulatedSlip_[i][c] += node.slipIncrement[c];
+    node.slipIncrement = node.weightedSlip = {0.0, 0.0, 0.0};
+    if (reset && node.state == ContactState::Slip) node.state = ContactState::Stick;
+    if (node.state != ContactState::Slip) node.slipDirection = {0.0, 0.0, 0.0};
+  }
   ++steps_;
-  stepStartState_ = state_;
-  stepStartLambdaN_ = lambdaN_;
+  stepStart_ = nodes_;
 }
 
 void ContactPair::restoreStep() {
-  state_ = stepStartState_;
-  lambdaN_ = stepStartLambdaN_;
-  for (std::size_t i = 0; i < state_.size(); ++i) slipIncrement_[i] = weightedSlip_[i] = {0.0, 0.0, 0.0};
   // The retry calls beginStep() again: it must see the converged state of
   // the previous step, not the failed iterate (the slip's Dᵗ, Mᵗ, xᵗ).
+  nodes_ = stepStart_;
   mortar_ = stepStartMortar_;
   x_ = stepStartX_;
-  traction_ = stepStartTraction_;
-  slipDirection_ = stepStartSlipDirection_;
   --steps_;
   searched_ = false;
   restored_ = true;
@@ -286,12 +237,6 @@ void ContactPair::searchAndIntegrate(const Vector& u) {
   mortar_ = sumToOwners(*interface_, local);
 }
 
-void ContactPair::differentiateActive() {
-  std::vector<char> flags(state_.size(), 0);
-  for (std::size_t i = 0; i < state_.size(); ++i) flags[i] = isActive(state_[i]) ? 1 : 0;
-  differentiate(flags);
-}
-
 void ContactPair::differentiate(const std::vector<char>& ownedFlags) {
   static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact mortar derivatives");
   Teuchos::TimeMonitor scope(*timer);
@@ -333,210 +278,117 @@ void ContactPair::differentiate(const std::vector<char>& ownedFlags) {
   mortarDerivatives_ = sumToOwners(*interface_, partial);
 }
 
-PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResidual, bool updateSet,
-                                         ContactContributions& out) {
-  // Stage 1 (values): search, normals, D, M, g~ of every slave node; the new
-  // active set. Stage 2 (derivatives, Sacado): only the faces around active
-  // nodes — the rest of a large slave surface costs a plain double pass.
-  searchAndIntegrate(u);
-  if (frictional()) return updateFrictional(bulkResidual, updateSet, out);
-  // ALM and MPC share the condensed rows (the MPC's ties); they differ in the state rule.
-  const bool alm = settings_.formulation != ContactFormulation::Penalty;
-  const bool mpc = settings_.formulation == ContactFormulation::MPC;
-  const auto r = bulkResidual.getData(0);
+SlaveNode ContactPair::slaveNode(std::size_t i, bool derivatives) {
+  SlaveNode n;
+  n.index = i;
+  n.slave = interface_->ownedSlaveNodes()[i];
+  n.node = interface_->slaveNodes()[n.slave];
+  const NodalMortarEntry* entry = mortar_.find(n.node);
+  n.mortar = entry != nullptr && entry->D > minimumD_ ? entry : nullptr;
+  n.normal = &normals_[n.slave];
+  if (derivatives) {
+    n.mortarDerivative = mortarDerivatives_.find(n.node);
+    n.normalDerivative = &normalDerivatives_[n.slave];
+  }
+  n.prescribed = prescribed_[interface_->interfaceNodeIndex(n.node)];
+  // A prescribed component is driven (it moves the slave relative to the
+  // master, FrictionalNodeInput::driven) unless a master node coupled to the
+  // slave node has it prescribed too: then it is a plane both bodies share (a
+  // symmetry plane), across which nothing slides; the mortar slip there is
+  // one-sided (the node's support ends at the plane) and must not be read as
+  // a slip.
+  const NodalMortarEntry* coupling = derivatives && n.mortarDerivative ? n.mortarDerivative : n.mortar;
+  for (int c = 0; c < dim_ && coupling != nullptr; ++c) {
+    if (!n.prescribed[c]) continue;
+    bool shared = false;
+    for (const auto& [master, Mjl] : coupling->M) shared = shared || isPrescribed(master, c);
+    n.driven[c] = !shared;
+  }
+  n.epsN = penalty_[i];
+  n.frictionCoefficient = settings_.frictionCoefficient(n.node);
+  n.lastStepSlip = lastStepSlip_[i];
+  n.state = &nodes_[i];
+  n.stepStart = &stepStart_[i];
+  return n;
+}
+
+PairIterationSummary ContactPair::updateNodes(const Vector* bulkResidual, const std::vector<std::array<double, 3>>* z,
+                                              bool updateSet, ContactContributions& out) {
+  const bool slip = formulation_->usesSlip();
   const auto& map = *dofMap_;
-  auto row = [this](long long node, int c) { return dofRow(node, c); };
+  Teuchos::ArrayRCP<const double> r;
+  if (bulkResidual != nullptr) r = bulkResidual->getData(0);
+  // The node's bulk residual (zero on prescribed components) and z.
+  auto complete = [&](SlaveNode& n) {
+    for (int c = 0; c < dim_ && bulkResidual != nullptr; ++c)
+      if (!n.prescribed[c]) n.residual[c] = r[map.getLocalElement(static_cast<GlobalOrdinal>(dim_ * n.node + c))];
+    if (z != nullptr) n.multiplier = (*z)[n.index];
+  };
+  const std::size_t owned = nodes_.size();
+  COULOMB_CHECK(z == nullptr || z->size() == owned, "one multiplier per owned slave node");
+
+  // Stage 1 (values): the new states.
   PairIterationSummary summary;
   std::string failure;
-  const auto& slaveNodes = interface_->slaveNodes();
-  const auto& owned = interface_->ownedSlaveNodes();
-  const double t = thickness_;
-
-  for (std::size_t i = 0; i < owned.size(); ++i) {
-    const int s = owned[i];
-    const long long node = slaveNodes[s];
-    const ContactState previous = state_[i];
-    const NodalMortarEntry* entry = mortar_.find(node);
-    if (entry == nullptr || entry->D <= minimumD_) {
-      state_[i] = ContactState::Inactive;
-      lambdaN_[i] = pressure_[i] = 0;
-      countState(summary.activeSet, state_[i], previous);
-      continue;
-    }
-    const double D = entry->D, gap = entry->gap;
-    const auto& n = normals_[s].n;
-    const Frame frame = frameOf(dim_, n, prescribed_[interface_->interfaceNodeIndex(node)]);
-
-    double lambdaN = 0;
-    ContactState state = previous;
-    if (alm) {
-      if (previous == ContactState::Active && frame.usable) {
-        double projected = 0;
-        for (int f = 0; f < frame.numFree; ++f) {
-          const int c = frame.free[f];
-          projected += frame.a[c] * r[map.getLocalElement(row(node, c))];
-        }
-        lambdaN = projected / (k_ * t * D * frame.normFree);
+  std::vector<char> flags(owned, 0);
+  for (std::size_t i = 0; i < owned; ++i) {
+    SlaveNode n = slaveNode(i, false);
+    complete(n);
+    SlaveNodeState& node = nodes_[i];
+    const ContactState previous = node.state;
+    ContactState state = ContactState::Inactive;
+    if (n.mortar != nullptr) {
+      if (slip) {
+        n.slip = node.weightedSlip = weightedSlip(*n.mortar, nullptr);
+        for (int c = 0; c < 3; ++c) node.slipIncrement[c] = -n.slip[c] / n.mortar->D;  // the slave relative to the master
       }
-      const ContactState rule = !frame.usable ? ContactState::Inactive
-                                : mpc       ? mpcContactState(previous == ContactState::Active, lambdaN, gap)
-                                            : almContactState(lambdaN, gap, D, k_, penalty_[i], touchingGap());
-      state = nextState(rule, previous, updateSet, summary.violations);
-      if (!frame.usable) state = ContactState::Inactive;
-      if (state == ContactState::Inactive) lambdaN = 0;
+      state = formulation_->decide(n, previous, updateSet, summary);
+      if (isActive(state)) {
+        std::string deep = penetrationFailure(n.node, n.mortar->gap, n.mortar->D);
+        if (failure.empty()) failure = std::move(deep);
+      }
     } else {
-      state = nextState(penaltyContactState(gap), previous, updateSet, summary.violations);
+      node.lambdaN = node.pressure = 0.0;
+      node.traction = {0.0, 0.0, 0.0};
     }
-    state_[i] = state;
+    if (!isActive(state)) node.weightedSlip = node.slipIncrement = {0.0, 0.0, 0.0};  // an open node does not slip
+    if (state != ContactState::Slip) node.slipDirection = {0.0, 0.0, 0.0};      // stage 2 sets it for the slipping ones
+    node.state = state;
     countState(summary.activeSet, state, previous);
-    if (state == ContactState::Active) {
-      std::string deep = penetrationFailure(node, gap, D);
-      if (failure.empty()) failure = std::move(deep);
-    }
-    if (alm) {
-      lambdaN_[i] = lambdaN;
-      pressure_[i] = -k_ * lambdaN;
-    } else {
-      pressure_[i] = state == ContactState::Active ? penalty_[i] * std::max(-gap, 0.0) / D : 0.0;
-      lambdaN_[i] = -pressure_[i] / k_;
-    }
+    flags[i] = formulation_->needsDerivatives(n) ? 1 : 0;
   }
   widenSearchRadius();
   throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
-  differentiateActive();
-
-  for (std::size_t i = 0; i < owned.size(); ++i) {
-    if (state_[i] != ContactState::Active) continue;
-    const int s = owned[i];
-    const long long node = slaveNodes[s];
-    const NodalMortarEntry* entry = mortarDerivatives_.find(node);
-    if (entry == nullptr) continue;  // cannot happen: the node's faces were differentiated
-    const double D = entry->D, gap = entry->gap, lambdaN = lambdaN_[i], epsN = penalty_[i];
-    const auto& n = normalDerivatives_[s].n;
-    const auto& dn = normalDerivatives_[s].derivative;
-    const Frame frame = frameOf(dim_, n, prescribed_[interface_->interfaceNodeIndex(node)]);
-
-    // Slave force f_j acting on the slave body.
-    std::array<double, 3> force{};
-    for (int c = 0; c < dim_; ++c) force[c] = alm ? k_ * t * D * lambdaN * n[c] : -pressure_[i] * t * D * n[c];
-    for (int c = 0; c < dim_; ++c) {
-      summary.slaveForce[c] += force[c];
-      summary.normalForce[c] += force[c];
-      summary.contactForce2 += force[c] * force[c];
+  // Stage 2 (derivatives, Sacado): only the faces around the flagged nodes —
+  // the rest of a large slave surface costs a plain double pass.
+  differentiate(flags);
+  RowSink sink(out, *interface_, prescribed_, multiplierBlockOffset_);
+  std::array<DerivativeRow, 3> dw;
+  for (std::size_t i = 0; i < owned; ++i) {
+    SlaveNode n = slaveNode(i, flags[i] != 0);
+    complete(n);
+    if (slip && n.mortarDerivative != nullptr) {
+      n.slip = weightedSlip(*n.mortarDerivative, &dw);
+      n.slipDerivative = &dw;
     }
-
-    // Derivative rows (d/dx of node, component) with prescribed columns left out.
-    auto emitRow = [&](std::vector<linalg::MatrixTriplet>& target, GlobalOrdinal targetRow,
-                       const std::map<DofKey, double>& values) {
-      for (const auto& [key, value] : values)
-        if (!isPrescribed(key.first, key.second) && value != 0.0)
-          target.push_back({targetRow, row(key.first, key.second), value});
-    };
-    auto addScaled = [](std::map<DofKey, double>& to, const DerivativeRow& from, double scale) {
-      for (const auto& [key, value] : from) to[key] += scale * value;
-    };
-    auto addNormal = [&dn](std::map<DofKey, double>& to, int component, double scale) {
-      for (const auto& d : dn) to[{d.node, d.component}] += scale * d.dn[component];
-    };
-
-    if (alm) {
-      // Forces on prescribed DoFs (slave f_j = k t lambda_n D n, master -k t lambda_n M_jl n): the supports'.
-      for (int c = 0; c < dim_; ++c) {
-        if (isPrescribed(node, c)) out.prescribedForce.push_back({row(node, c), force[c]});
-        for (const auto& [master, Mjl] : entry->M)
-          if (isPrescribed(master, c)) out.prescribedForce.push_back({row(master, c), -k_ * t * lambdaN * Mjl * n[c]});
-      }
-      // T - I on the slave rows: the gap slot is emptied, the b rows replace the others.
-      out.transform.push_back({row(node, frame.gapSlot), row(node, frame.gapSlot), -1.0});
-      for (int f = 0; f < frame.numFree; ++f) {
-        const int slot = frame.free[f];
-        if (slot == frame.gapSlot) continue;
-        out.transform.push_back({row(node, slot), row(node, slot), -1.0});
-        for (int g = 0; g < frame.numFree; ++g)
-          out.transform.push_back({row(node, slot), row(node, frame.free[g]), frame.b[slot][frame.free[g]]});
-      }
-      // T - I on the master rows: + M_jl n_c / (D |n_F|) × the a-row of j.
-      for (const auto& [master, Mjl] : entry->M)
-        for (int c = 0; c < dim_; ++c) {
-          if (isPrescribed(master, c)) continue;
-          const double scale = Mjl * n[c] / (D * frame.normFree);
-          for (int g = 0; g < frame.numFree; ++g)
-            out.transform.push_back({row(master, c), row(node, frame.free[g]), scale * frame.a[frame.free[g]]});
-        }
-      // The gap row: sign eps_n t g~_j and its derivative.
-      const double scale = frame.gapRowSign * epsN * t;
-      out.constraintResidual.push_back({row(node, frame.gapSlot), scale * gap});
-      std::map<DofKey, double> gapRow;
-      addScaled(gapRow, entry->dGap, scale);
-      emitRow(out.constraint, row(node, frame.gapSlot), gapRow);
-      summary.normalResidual2 += (epsN * t * gap) * (epsN * t * gap);
-      // The same step as the uncondensed saddle-point system (lambda_n,j a
-      // DoF of its own): its column -d f_c / d lambda_n, its row eps_n t g~.
-      const GlobalOrdinal multiplier = multiplierOffset_ + node;
-      for (int c = 0; c < dim_; ++c) {
-        if (!isPrescribed(node, c)) {
-          out.saddle.columns.push_back({row(node, c), multiplier, -k_ * t * D * n[c]});
-          out.saddle.force.push_back({row(node, c), -k_ * t * D * lambdaN * n[c]});
-        }
-        for (const auto& [master, Mjl] : entry->M)
-          if (!isPrescribed(master, c)) {
-            out.saddle.columns.push_back({row(master, c), multiplier, k_ * t * Mjl * n[c]});
-            out.saddle.force.push_back({row(master, c), k_ * t * Mjl * lambdaN * n[c]});
-          }
-      }
-      std::map<DofKey, double> saddleRow;
-      addScaled(saddleRow, entry->dGap, epsN * t);
-      emitRow(out.saddle.rows, multiplier, saddleRow);
-      out.saddle.gap.push_back({multiplier, epsN * t * gap});
-      // K_c = -d f_c / dx with lambda_n frozen: slave f_j = k t lambda_n D n, master f_l = -k t lambda_n M_jl n.
-      if (lambdaN != 0.0) {
-        const double kl = k_ * t * lambdaN;
-        for (int c = 0; c < dim_; ++c) {
-          if (isPrescribed(node, c)) continue;
-          std::map<DofKey, double> values;
-          addScaled(values, entry->dD, -kl * n[c]);
-          addNormal(values, c, -kl * D);
-          emitRow(out.contactStiffness, row(node, c), values);
-        }
-        for (const auto& [master, Mjl] : entry->M)
-          for (int c = 0; c < dim_; ++c) {
-            if (isPrescribed(master, c)) continue;
-            std::map<DofKey, double> values;
-            const auto dM = entry->dM.find(master);
-            if (dM != entry->dM.end()) addScaled(values, dM->second, kl * n[c]);
-            addNormal(values, c, kl * Mjl);
-            emitRow(out.contactStiffness, row(master, c), values);
-          }
-      }
-    } else {
-      // Penalty (4.71a): residual -f, K_c = -df/dx through g~, n, D and M.
-      auto penaltyRows = [&](long long target, const NodalForce<3>& f, const DerivativeRow* dM) {
-        for (int c = 0; c < dim_; ++c) {
-          if (isPrescribed(target, c)) {
-            out.prescribedForce.push_back({row(target, c), t * f.f[c]});
-            continue;
-          }
-          out.contactResidual.push_back({row(target, c), -t * f.f[c]});
-          std::map<DofKey, double> values;
-          addScaled(values, entry->dGap, -t * f.dGap[c]);
-          addScaled(values, entry->dD, -t * f.dD[c]);
-          if (dM) addScaled(values, *dM, -t * f.dM[c]);
-          for (int m = 0; m < dim_; ++m) addNormal(values, m, -t * f.dNormal[c][m]);
-          emitRow(out.contactStiffness, row(target, c), values);
-        }
-      };
-      const NVec<3> n3{n[0], n[1], dim_ == 3 ? n[2] : 0.0};
-      penaltyRows(node, penaltySlaveForce<3>(n3, gap, epsN), nullptr);
-      for (const auto& [master, Mjl] : entry->M) {
-        const auto dM = entry->dM.find(master);
-        penaltyRows(master, penaltyMasterForce<3>(n3, gap, D, Mjl, epsN),
-                    dM != entry->dM.end() ? &dM->second : nullptr);
-      }
-    }
+    formulation_->emit(n, sink, summary);
   }
-
   reduceSummary(summary);
   return summary;
+}
+
+PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResidual, bool updateSet,
+                                         ContactContributions& out) {
+  COULOMB_CHECK(!formulation_->needsMultipliers(), "update() of a pair in the saddle-point form");
+  searchAndIntegrate(u);
+  return updateNodes(&bulkResidual, nullptr, updateSet, out);
+}
+
+PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::vector<std::array<double, 3>>& z,
+                                                    bool updateSet, ContactContributions& out) {
+  COULOMB_CHECK(formulation_->needsMultipliers(), "updateSaddlePoint() of a pair in the condensed form");
+  searchAndIntegrate(u);
+  return updateNodes(nullptr, &z, updateSet, out);
 }
 
 }  // namespace coulomb::contact

@@ -28,86 +28,25 @@
 #include <vector>
 
 #include "coulomb/contact/ActiveSet.hpp"
+#include "coulomb/contact/ContactContributions.hpp"
 #include "coulomb/contact/ContactInterface.hpp"
 #include "coulomb/contact/ContactSearch.hpp"
 #include "coulomb/contact/ContactSettings.hpp"
-#include "coulomb/contact/FrictionalNode.hpp"
 #include "coulomb/contact/MortarPass.hpp"
+#include "coulomb/contact/formulation/Formulation.hpp"
 #include "coulomb/core/TpetraTypes.hpp"
 #include "coulomb/fem/ModelSettings.hpp"
 #include "coulomb/linalg/TripletAssembly.hpp"
 
 namespace coulomb::contact {
 
-/// @brief The uncondensed (u, lambda_n) Newton system of the active ALM
-/// nodes, for checking the condensation: lambda_n of slave node j is the DoF
-/// dim × (number of mesh nodes) + j, owned by the node's owner.
-///   [K + K_c   C] [du]     [r - f_c]
-///   [  G_s     0] [dl] = - [  g_s  ]
-struct SaddlePointContributions {
-  std::vector<linalg::MatrixTriplet> columns;  ///< C = -d f_c / d lambda_n
-  std::vector<linalg::MatrixTriplet> rows;     ///< G_s = d (eps_n t g~) / du
-  std::vector<linalg::VectorEntry> gap;        ///< g_s = eps_n t g~
-  std::vector<linalg::VectorEntry> force;      ///< -f_c with the current lambda_n
-};
-
-/// @brief The Newton system with the multipliers as unknowns (deck
-/// `Contact/System Form` = Saddle Point; ContactPairSaddlePoint.cpp): per
-/// slave node j a vector unknown z_j = (k / eps_n) lambda_j (a length, so that
-/// its columns t eps_n D_j are of the size of the stiffness), and the rows
-/// R_j = (eps_n t / k) r_lambda_j of NodalContactLaw (4.72b, components form):
-///   [K + K_c   C] [du]     [r - f_c]
-///   [  R_u   R_z] [dz] = - [  R    ]
-struct MultiplierBlock {
-  std::vector<linalg::MatrixTriplet> columns;  ///< C = -d f_c / d z (displacement rows)
-  std::vector<linalg::MatrixTriplet> rows;     ///< d R / d (u, z) (multiplier rows)
-  std::vector<linalg::VectorEntry> residual;   ///< R (multiplier rows)
-};
-
-/// @brief Contributions of one or more pairs to the condensed system.
-struct ContactContributions {
-  std::vector<linalg::MatrixTriplet> transform;   ///< T - I
-  /// Added to T - I for the tangent only: frictional rows are nonlinear in
-  /// the bulk residual r (their value is in constraintResidual, their
-  /// derivative with respect to r combines rows of K here).
-  std::vector<linalg::MatrixTriplet> tangentTransform;
-  std::vector<linalg::MatrixTriplet> constraint;  ///< G
-  std::vector<linalg::VectorEntry> constraintResidual;  ///< g
-  std::vector<linalg::MatrixTriplet> contactStiffness;  ///< K_c
-  std::vector<linalg::VectorEntry> contactResidual;     ///< -f_c (penalty pairs)
-  /// f_c on prescribed DoFs (interface nodes on a Dirichlet set): not in the
-  /// system (those rows are u - u_bar), carried by the support
-  /// (ContactModel::subtractPrescribedForces).
-  std::vector<linalg::VectorEntry> prescribedForce;
-  SaddlePointContributions saddle;                      ///< ALM pairs, uncondensed form
-  MultiplierBlock multipliers;  ///< System Form = Saddle Point (then transform etc. stay empty)
-};
-
-/// @brief Per-update figures of one pair, summed over ranks.
-struct PairIterationSummary {
-  ActiveSetSummary activeSet;
-  double normalResidual2 = 0;  ///< sum of (eps_n t g~_j)^2 over active ALM nodes
-  double contactForce2 = 0;    ///< sum of |f_j|^2 over active slave nodes
-  double stickResidual2 = 0;   ///< sum of the squared stick rows (frictional pairs)
-  double slipResidual2 = 0;    ///< sum of the squared slip rows (frictional pairs)
-  double tangentialForce2 = 0;  ///< sum of |tangential part of f_j|^2 over active slave nodes (frictional pairs)
-  std::array<double, 3> slaveForce{};  ///< total contact force on the slave body
-  std::array<double, 3> normalForce{};  ///< its normal part, sum of the nodal normal forces
-  std::array<double, 3> tangentialForce{};  ///< its tangential part
-  /// Nodes whose frozen state (simplified semi-smooth Newton) disagrees with
-  /// the update rule at this iterate; 0 when the set was updated.
-  long long violations = 0;
-  /// A hash of every slave node's state (the same on every rank and for any
-  /// partition): equal sets have equal signatures (ActiveSetCycle).
-  std::uint64_t setSignature = 0;
-};
-
 class ContactPair {
 public:
   /// Collective. The materials of `model` give the automatic penalty
-  /// (AutomaticPenalty.hpp) and the slave block's 2D thickness (1 in 3D).
+  /// (AutomaticPenalty.hpp) and the slave block's 2D thickness (1 in 3D);
+  /// the settings and `form` the formulation (makeFormulation).
   ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& ownedDofMap, const ContactPairSettings& settings,
-              const fem::ModelSettings& model);
+              const fem::ModelSettings& model, ContactSystemForm form);
   ~ContactPair();
 
   const ContactPairSettings& settings() const { return settings_; }
@@ -145,6 +84,7 @@ public:
     /// D_j: the mortar weight of the node, its share of the slave surface
     /// in contact with the master (current configuration; force = D_j x traction).
     double area = 0;
+    double penalty = 0;  ///< eps_n of the node
     std::array<double, 3> normal{}, multiplier{};
     /// Frictional pairs: tangential traction on the slave, weighted slip
     /// increment of the step (seed sign, 4.69b), accumulated slip of the
@@ -166,17 +106,20 @@ private:
   /// nodes lie inside the master beyond it (SearchResult::unpairedDepth).
   void search();
   void searchAndIntegrate(const Vector& u);
-  void differentiateActive();
   /// The derivative pass for the owned slave nodes flagged (ownedSlaveNodes() order).
   void differentiate(const std::vector<char>& ownedFlags);
-  /// update() for frictional pairs (ContactPairFriction.cpp).
-  PairIterationSummary updateFrictional(const Vector& bulkResidual, bool updateSet, ContactContributions& out);
-  /// The same for the penalty formulation (forces, no condensation).
-  PairIterationSummary updatePenaltyFrictional(bool updateSet, ContactContributions& out);
+  /// The one loop over the owned slave nodes (after searchAndIntegrate):
+  /// stage 1 the formulation decides each node's state from the values,
+  /// stage 2 it emits each node's rows with the derivatives. `bulkResidual`
+  /// for the condensed forms, `z` for the saddle-point form (else null).
+  PairIterationSummary updateNodes(const Vector* bulkResidual, const std::vector<std::array<double, 3>>* z,
+                                   bool updateSet, ContactContributions& out);
+  /// Owned node i as the formulation sees it; `derivatives`: with the
+  /// derivative pass's entries (stage 2, when it differentiated the node).
+  SlaveNode slaveNode(std::size_t i, bool derivatives);
   /// Weighted slip w_j of the step (seed sign) and, when `derivative` is
-  /// given, dw_c / dx as three rows.
+  /// given, dw_c / dx as three rows (ContactPairSlip.cpp).
   std::array<double, 3> weightedSlip(const NodalMortarEntry& entry, std::array<DerivativeRow, 3>* derivative) const;
-  /// The message when an active node penetrates deeper than the search radius, else "".
   /// A message when an active node penetrates deeper than the search radius
   /// (empty otherwise); records the depth for widenSearchRadius().
   std::string penetrationFailure(long long node, double gap, double D);
@@ -185,21 +128,8 @@ private:
   /// for every later search of the run (the iterate is then rejected by the
   /// caller's failure, and the step retried with the wider search).
   void widenSearchRadius();
-  /// Stores the new state of owned node i (friction: an open node has no slip,
-  /// and it is marked when it opens) and counts it into the summary.
-  void settleState(std::size_t i, ContactState state, ContactState previous, PairIterationSummary& summary);
-  /// Surfaces within this length count as touching (closed): 1e-12 of the
-  /// slave face size, 1000 times the round-off of coordinates 1000 faces
-  /// from the origin (almContactState); the tension it lets an active node
-  /// keep, eps_n × 1e-12 h ~ 1e-12 E, is far below the contact tolerances.
-  double touchingGap() const { return 1e-12 * faceSize_; }
-  /// The kernel parameters of a frictional pair (setNodeParameters adds the node's).
-  FrictionalParameters frictionalParameters() const;
-  /// Owned node i's (global `node`) eps_n, eps_tau and friction coefficient into p.
-  void setNodeParameters(FrictionalParameters& p, std::size_t i, long long node) const;
   /// Sums the summary over ranks.
   void reduceSummary(PairIterationSummary& summary) const;
-  GlobalOrdinal dofRow(long long node, int c) const { return static_cast<GlobalOrdinal>(dim_ * node + c); }
   bool isPrescribed(long long node, int c) const;
 
   const mesh::Mesh& mesh_;
@@ -208,14 +138,13 @@ private:
   std::unique_ptr<ContactInterface> interface_;
   std::unique_ptr<InterfaceGather> gather_;
   int dim_;
-  double k_ = 1, thickness_ = 1, radius_ = 0, minimumD_ = 0;
+  PairConstants constants_;
+  std::unique_ptr<Formulation> formulation_;
+  double radius_ = 0, minimumD_ = 0;
   /// eps_n per owned slave node (ownedSlaveNodes() order): the deck's
   /// `Penalty`, or the automatic one (AutomaticPenalty.hpp).
   std::vector<double> penalty_;
-  double faceSize_ = 1;    ///< h, the mean slave face size
-  double referenceD_ = 1;  ///< h^(dim-1): the scale of D_j
   GlobalOrdinal multiplierBlockOffset_ = 0;  ///< saddle-point form: first global index of z
-  GlobalOrdinal multiplierOffset_ = 0;  ///< first global index of the lambda_n DoFs (saddle-point form)
   /// prescribed_[i][c]: component c of interface node i is a Dirichlet DoF.
   std::vector<std::array<bool, 3>> prescribed_;
   bool searched_ = false;
@@ -226,27 +155,21 @@ private:
   InterfaceConfiguration x_;          ///< current interface coordinates (last update)
   std::vector<NodalNormal> normals_;  ///< by slave node index, values
   NodalMortarQuantities mortar_;      ///< owned slave nodes, values
-  /// The same with derivatives, for the active nodes (stage 2 of update()).
+  /// The same with derivatives, for the nodes stage 2 needs.
   std::vector<NodalNormal> normalDerivatives_;
   NodalMortarQuantities mortarDerivatives_;
-  // State of the owned slave nodes (ownedSlaveNodes() order).
-  std::vector<ContactState> state_, stepStartState_;
-  std::vector<double> lambdaN_, stepStartLambdaN_;
-  std::vector<double> pressure_;
+  /// The owned slave nodes (ownedSlaveNodes() order): now and at the step start.
+  std::vector<SlaveNodeState> nodes_, stepStart_;
   // Friction: the mortar operators and interface coordinates of the last
-  // converged state (D^t, M^t, x^t of 4.69), per owned node the traction,
-  // the weighted slip of the step and the slip accumulated over the steps.
+  // converged state (D^t, M^t, x^t of 4.69) and per owned node the slip
+  // accumulated over the steps before this one.
   NodalMortarQuantities stepStartMortar_;
   InterfaceConfiguration stepStartX_;
   int steps_ = 0;
-  std::vector<std::array<double, 3>> traction_, stepStartTraction_, weightedSlip_, slipIncrement_,
-      stepStartAccumulatedSlip_;
+  std::vector<std::array<double, 3>> accumulatedSlip_;
   /// The weighted slip of the last converged step (the slip direction of
   /// Slip Reset Frequency < 0); kept through a restoreStep().
   std::vector<std::array<double, 3>> lastStepSlip_;
-  /// The unit slip direction of each slipping node's rows at the last
-  /// iterate (FrictionalNodeInput::previousDirection), and at the step start.
-  std::vector<std::array<double, 3>> slipDirection_, stepStartSlipDirection_;
   bool restored_ = false;  ///< restoreStep() ran since the last beginStep()
 };
 

@@ -34,7 +34,7 @@ void ContactPair::reduceSummary(PairIterationSummary& summary) const {
   long long signature = 0;
   const auto& owned = interface_->ownedSlaveNodes();
   for (std::size_t i = 0; i < owned.size(); ++i)
-    signature += static_cast<long long>(nodeStateHash(interface_->slaveNodes()[owned[i]], static_cast<int>(state_[i])));
+    signature += static_cast<long long>(nodeStateHash(interface_->slaveNodes()[owned[i]], static_cast<int>(nodes_[i].state)));
   long long counts[8] = {summary.violations,
                          static_cast<long long>(summary.activeSet.nodes),
                          static_cast<long long>(summary.activeSet.active),
@@ -61,23 +61,25 @@ std::vector<ContactPair::NodeOutput> ContactPair::nodeOutput() const {
   for (std::size_t i = 0; i < owned.size(); ++i) {
     NodeOutput o;
     o.node = interface_->slaveNodes()[owned[i]];
-    o.state = state_[i];
-    o.pressure = pressure_[i];
+    const SlaveNodeState& node = nodes_[i];
+    o.state = node.state;
+    o.pressure = node.pressure;
+    o.penalty = penalty_[i];
     if (const NodalMortarEntry* entry = mortar_.find(o.node)) {
       o.weightedGap = entry->gap;
       o.area = entry->D;
       o.gap = entry->D > minimumD_ ? entry->gap / entry->D : 0.0;
     }
     if (static_cast<std::size_t>(owned[i]) < normals_.size()) o.normal = normals_[owned[i]].n;
-    for (int c = 0; c < 3; ++c) o.multiplier[c] = lambdaN_[i] * o.normal[c];
+    for (int c = 0; c < 3; ++c) o.multiplier[c] = node.lambdaN * o.normal[c];
     if (frictional()) {
       double tn = 0;
-      for (int c = 0; c < 3; ++c) tn += traction_[i][c] * o.normal[c];
+      for (int c = 0; c < 3; ++c) tn += node.traction[c] * o.normal[c];
       for (int c = 0; c < 3; ++c) {
-        o.multiplier[c] = traction_[i][c] / k_;
-        o.tangentialTraction[c] = traction_[i][c] - tn * o.normal[c];
-        o.weightedSlip[c] = weightedSlip_[i][c];
-        o.slip[c] = stepStartAccumulatedSlip_[i][c] + slipIncrement_[i][c];
+        o.multiplier[c] = node.traction[c] / constants_.k;
+        o.tangentialTraction[c] = node.traction[c] - tn * o.normal[c];
+        o.weightedSlip[c] = node.weightedSlip[c];
+        o.slip[c] = accumulatedSlip_[i][c] + node.slipIncrement[c];
       }
     }
     out.push_back(o);

@@ -125,9 +125,9 @@ SearchResult searchContactPairs(const ContactInterface& contact, const Interface
 SearchResult searchContactPairs(const ContactInterface& contact, const InterfaceConfiguration& x, double radius,
                                 const std::vector<int>& slaveFaces) {
   requireRadius(radius, "search radius");
-  COULOMB_REQUIRE(x.dimension == contact.dimension() &&
+  COULOMB_CHECK(x.dimension == contact.dimension() &&
                       x.x.size() == contact.interfaceNodes().size() * static_cast<std::size_t>(x.dimension),
-                  "internal: interface configuration does not match the contact interface");
+                  "interface configuration does not match the contact interface");
   const double margin = 0.5 * radius;
   SearchResult result;
   result.radius = radius;
@@ -151,7 +151,7 @@ SearchResult searchContactPairs(const ContactInterface& contact, const Interface
   std::vector<Entry> hits;
   for (std::size_t k = 0; k < slaveFaces.size(); ++k) {
     const int s = slaveFaces[k];
-    COULOMB_REQUIRE(s >= 0 && static_cast<std::size_t>(s) < slaves.size(), "internal: slave face index " << s);
+    COULOMB_CHECK(s >= 0 && static_cast<std::size_t>(s) < slaves.size(), "slave face index " << s);
     Box box;
     if (!enlargedBox(slaves[s], x, margin, box)) {
       ++result.skippedFaces;

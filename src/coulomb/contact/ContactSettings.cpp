@@ -7,6 +7,7 @@
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "coulomb/core/Error.hpp"
+#include "coulomb/io/Choices.hpp"
 #include "coulomb/io/ExodusResults.hpp"
 #include "coulomb/io/ParameterValidation.hpp"
 #include "coulomb/io/RangeValidator.hpp"
@@ -15,9 +16,24 @@ namespace coulomb::contact {
 
 using Teuchos::ParameterList;
 
-const char* toString(ContactFormulation formulation) {
-  return formulation == ContactFormulation::ALM ? "ALM" : formulation == ContactFormulation::MPC ? "MPC" : "Penalty";
-}
+namespace {
+
+// The deck's enumerations, each declared once (names, values; the validator,
+// the parse and the messages come from these tables).
+const io::Choices<ContactFormulation> kFormulations{
+    {"ALM", ContactFormulation::ALM}, {"Penalty", ContactFormulation::Penalty}, {"MPC", ContactFormulation::MPC}};
+const io::Choices<SemiSmoothNewton> kSemiSmooth{{"Full", SemiSmoothNewton::Full},
+                                                {"Simplified", SemiSmoothNewton::Simplified}};
+const io::Choices<FrictionLawType> kFrictionLaws{
+    {"None", FrictionLawType::None}, {"Coulomb", FrictionLawType::Coulomb}, {"Tresca", FrictionLawType::Tresca}};
+const io::Choices<SlipMeasure> kSlipMeasures{{"Objective", SlipMeasure::Objective},
+                                             {"Non-Objective", SlipMeasure::NonObjective}};
+const io::Choices<ContactSystemForm> kSystemForms{{"Condensed", ContactSystemForm::Condensed},
+                                                  {"Saddle Point", ContactSystemForm::SaddlePoint}};
+
+}  // namespace
+
+const char* toString(ContactFormulation formulation) { return kFormulations.name(formulation); }
 
 void addValidContactParameters(ParameterList& valid) {
   ParameterList& contact =
@@ -42,38 +58,38 @@ void addValidContactParameters(ParameterList& valid) {
               "the stick and slip tests count as met while ||tangential contact forces|| <= this x ||contact forces|| "
               "(negligible friction; the rows stay in the residual test)",
               io::nonNegative());
-  contact.set("System Form", "Condensed",
+  contact.set("System Form", std::string(kSystemForms.name(defaults.systemForm)),
               "Condensed: multipliers eliminated, displacement-only Newton system (default); Saddle Point: the "
               "multipliers are Newton unknowns, solved by the direct solver (Amesos2) - a check of the condensation, "
               "ALM frictionless pairs only",
-              io::oneOf({"Condensed", "Saddle Point"}));
+              kSystemForms.validator());
   ParameterList& pairs = contact.sublist("Pairs", false, "One sublist per contact pair, named freely");
   ParameterList& pair = pairs.sublist("*", false, "a slave/master pair of side sets");
   const ContactPairSettings d;
   pair.set("Slave", "", std::string(io::kRequired) + "slave side set (the finer or curved surface)");
   pair.set("Master", "", std::string(io::kRequired) + "master side set");
-  pair.set("Formulation", "ALM",
+  pair.set("Formulation", std::string(kFormulations.name(d.formulation)),
            "ALM: Lagrange multipliers (condensed), no penetration at convergence; Penalty: pressure eps_n <-gap>; "
            "MPC: multipoint constraints (slave tied to master: stick all directions, slip normal only + Coulomb "
            "force), states from reactions and gaps",
-           io::oneOf({"ALM", "Penalty", "MPC"}));
+           kFormulations.validator());
   pair.set("Penalty", d.penalty,
            "normal penalty eps_n [force/length^3]; 0 = automatic: Penalty Factor x E / h (E = min(E_s, E_m), E_s and "
            "E_m the largest Young's moduli on the slave and the master side; h mean slave face size)",
            io::nonNegative());
   pair.set("Penalty Factor", d.penaltyFactor, "factor of the automatic penalty", io::positive());
   pair.set("Scale Factor", d.scaleFactor, "ALM scale factor k (contact traction = k lambda)", io::positive());
-  pair.set("Semi-Smooth Newton", "Full",
+  pair.set("Semi-Smooth Newton", std::string(kSemiSmooth.name(d.semiSmooth)),
            "Full: active set updated every iteration; Simplified: only at the first two evaluations of a step "
            "(and again after an iterate where the frozen set violates the contact conditions)",
-           io::oneOf({"Full", "Simplified"}));
+           kSemiSmooth.validator());
   pair.set("Search Every Iteration", d.searchEveryIteration, "search candidates every Newton iteration (else per step)");
   pair.set("Search Radius Factor", d.searchRadiusFactor,
            "search radius = this x the largest slave face diameter: should exceed the gap closed in one step; an active node found deeper than the radius widens it to twice its depth for the rest of the run (the step is retried)",
            io::positive());
-  pair.set("Friction Law", "None",
+  pair.set("Friction Law", std::string(kFrictionLaws.name(d.friction.type)),
            "None: frictionless; Coulomb: |t_tau| <= mu p; Tresca: |t_tau| <= Tresca Threshold",
-           io::oneOf({"None", "Coulomb", "Tresca"}));
+           kFrictionLaws.validator());
   pair.set("Friction Coefficient", d.friction.coefficient, "Coulomb's mu (0: pure slip)", io::nonNegative());
   pair.set("Friction Coefficient Field", "",
            "Coulomb's mu per node: the name of a nodal variable of the mesh file (its last time step), instead of "
@@ -95,10 +111,10 @@ void addValidContactParameters(ParameterList& valid) {
            "slipping nodes restart each n-th load step as stick (the thesis' choice, n = 1; MPC default 0); 0: never "
            "reset; < 0: never reset, and slipping nodes keep the direction of their slip in the last step",
            Teuchos::rcp(new Teuchos::EnhancedNumberValidator<int>(-1000000, 1000000)));
-  pair.set("Slip Measure", "Objective",
+  pair.set("Slip Measure", std::string(kSlipMeasures.name(d.slipMeasure)),
            "Objective: weighted slip from the change of the mortar operators (4.69b, frame indifferent); "
            "Non-Objective: from the displacement increments (4.65a)",
-           io::oneOf({"Objective", "Non-Objective"}));
+           kSlipMeasures.validator());
   pair.set("Operator Threshold", d.operatorThreshold,
            "objective slip only where the mortar operators changed by more than this (relative) over the step, "
            "else the non-objective one; 0: objective whenever possible",
@@ -122,9 +138,7 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
   settings.slipRelativeTolerance = io::valueOrDefault<double>(user, validContact, "Slip Relative Tolerance");
   settings.slipAbsoluteTolerance = io::valueOrDefault<double>(user, validContact, "Slip Absolute Tolerance");
   settings.tangentNormalRatio = io::valueOrDefault<double>(user, validContact, "Tangential Normal Ratio");
-  settings.systemForm = io::valueOrDefault<std::string>(user, validContact, "System Form") == "Saddle Point"
-                            ? ContactSystemForm::SaddlePoint
-                            : ContactSystemForm::Condensed;
+  settings.systemForm = kSystemForms.value(io::valueOrDefault<std::string>(user, validContact, "System Form"));
   if (!user.isSublist("Pairs")) return settings;
   const ParameterList& pairs = user.sublist("Pairs");
   const ParameterList& v = validContact.sublist("Pairs").sublist("*");
@@ -135,21 +149,14 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
     s.name = name;
     s.slave = p.get<std::string>("Slave");
     s.master = p.get<std::string>("Master");
-    const std::string formulation = io::valueOrDefault<std::string>(p, v, "Formulation");
-    s.formulation = formulation == "ALM"   ? ContactFormulation::ALM
-                    : formulation == "MPC" ? ContactFormulation::MPC
-                                           : ContactFormulation::Penalty;
+    s.formulation = kFormulations.value(io::valueOrDefault<std::string>(p, v, "Formulation"));
     s.penalty = io::valueOrDefault<double>(p, v, "Penalty");
     s.penaltyFactor = io::valueOrDefault<double>(p, v, "Penalty Factor");
     s.scaleFactor = io::valueOrDefault<double>(p, v, "Scale Factor");
-    s.semiSmooth = io::valueOrDefault<std::string>(p, v, "Semi-Smooth Newton") == "Full" ? SemiSmoothNewton::Full
-                                                                                         : SemiSmoothNewton::Simplified;
+    s.semiSmooth = kSemiSmooth.value(io::valueOrDefault<std::string>(p, v, "Semi-Smooth Newton"));
     s.searchEveryIteration = io::valueOrDefault<bool>(p, v, "Search Every Iteration");
     s.searchRadiusFactor = io::valueOrDefault<double>(p, v, "Search Radius Factor");
-    const std::string law = io::valueOrDefault<std::string>(p, v, "Friction Law");
-    s.friction.type = law == "Coulomb"  ? FrictionLawType::Coulomb
-                      : law == "Tresca" ? FrictionLawType::Tresca
-                                        : FrictionLawType::None;
+    s.friction.type = kFrictionLaws.value(io::valueOrDefault<std::string>(p, v, "Friction Law"));
     s.friction.coefficient = io::valueOrDefault<double>(p, v, "Friction Coefficient");
     s.friction.threshold = io::valueOrDefault<double>(p, v, "Tresca Threshold");
     s.tangentFactor = io::valueOrDefault<double>(p, v, "Tangent Factor");
@@ -160,8 +167,7 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
     // Newton iterations per step in gross slip (friction punch: 95 against
     // 61): MPC pairs never reset unless asked.
     if (s.formulation == ContactFormulation::MPC && !p.isParameter("Slip Reset Frequency")) s.slipResetFrequency = 0;
-    s.slipMeasure = io::valueOrDefault<std::string>(p, v, "Slip Measure") == "Objective" ? SlipMeasure::Objective
-                                                                                      : SlipMeasure::NonObjective;
+    s.slipMeasure = kSlipMeasures.value(io::valueOrDefault<std::string>(p, v, "Slip Measure"));
     s.pureSlip = io::valueOrDefault<bool>(p, v, "Pure Slip");
     s.frictionCoefficientField = io::valueOrDefault<std::string>(p, v, "Friction Coefficient Field");
     s.operatorThreshold = io::valueOrDefault<double>(p, v, "Operator Threshold");

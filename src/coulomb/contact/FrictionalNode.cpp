@@ -204,7 +204,7 @@ NodeTerms<dim, S> nodeTerms(const std::array<S, dim>& r, const std::array<S, dim
       }
       aU[k] /= f.normFree;
     }
-    if (state == kSlip) {
+    if (state == ContactState::Slip) {
       // tau_k = Θ d_k with Θ at lambdā_n = lambdā_n0 - Θ c, c = sum_k a.u_k d_k / |n_F|:
       // Coulomb Θ = mu <-lambdā_n> gives Θ = Θ0 / (1 - mu c) (c ~ the normal's
       // tilt into the driven directions, ~1e-4); Tresca's Θ is constant.
@@ -285,8 +285,8 @@ bool slipReversed(const NodeTerms<dim, double>& t, const std::array<double, dim>
 }
 
 void checkParameters(double D, const FrictionalParameters& p) {
-  COULOMB_REQUIRE(D > 0.0, "contact: nodal mortar weight D_j must be > 0, got " << D);
-  COULOMB_REQUIRE(p.k > 0.0 && p.epsN > 0.0 && p.epsTau > 0.0 && p.thickness > 0.0 && p.slipAugmentation > 0.0,
+  COULOMB_CHECK(D > 0.0, "contact: nodal mortar weight D_j must be > 0, got " << D);
+  COULOMB_CHECK(p.k > 0.0 && p.epsN > 0.0 && p.epsTau > 0.0 && p.thickness > 0.0 && p.slipAugmentation > 0.0,
                   "contact: frictional parameters k, eps_n, eps_tau, thickness and slip augmentation must be > 0");
 }
 
@@ -299,7 +299,7 @@ FrictionalNodeState<dim> frictionalState(const FrictionalNodeInput<dim>& in, Con
   FrictionalNodeState<dim> out;
   // The driven directions follow the law of the rows of the previous iterate.
   const auto terms = nodeTerms<dim, double>(in.residual, in.normal, in.slip, in.D, in.gap, in,
-                                            isActive(previous), previous == kSlip ? kSlip : ContactState::Stick, p);
+                                            isActive(previous), previous == ContactState::Slip ? ContactState::Slip : ContactState::Stick, p);
   if (!terms.frame.usable) return out;
   out.lambdaN = terms.lambdaN;
   out.augmentedNormal = terms.augmentedNormal;
@@ -314,7 +314,7 @@ FrictionalNodeState<dim> frictionalState(const FrictionalNodeInput<dim>& in, Con
   std::array<double, dim> directionO{}, directionU{};
   const double stickAugmentation = p.multiPointConstraint ? 0.0 : 1.0;
   out.tangentNorm = augmentedTangent<dim, double>(
-      terms, in.D, previous == kSlip ? p.slipAugmentation : stickAugmentation, p, directionO, directionU);
+      terms, in.D, previous == ContactState::Slip ? p.slipAugmentation : stickAugmentation, p, directionO, directionU);
   // A node that closes (first time in the step, or again) has no recovered
   // traction: it is judged on its augmented values (lambda = 0) from the
   // stick side, |eps_tau w / D| against Θ(eps_n g~ / D): the node at the
@@ -338,14 +338,14 @@ FrictionalNodeState<dim> frictionalState(const FrictionalNodeInput<dim>& in, Con
       for (int c = 0; c < dim; ++c) fixed = fixed || o[c] != 0.0 || u[c] != 0.0;
     }
     if (p.pureSlip) {
-      out.state = kSlip;
+      out.state = ContactState::Slip;
       return out;
     }
-    if (previous == kSlip && out.state == kSlip && !fixed &&
+    if (previous == ContactState::Slip && out.state == ContactState::Slip && !fixed &&
         slipReversed<dim>(terms, directionO, directionU, in, out.threshold, p))
       out.state = ContactState::Stick;
   } else if (p.pureSlip) {
-    out.state = kSlip;
+    out.state = ContactState::Slip;
   } else {
     double slip2 = 0.0;
     for (int c = 0; c < dim; ++c) slip2 += in.slip[c] * in.slip[c];
@@ -360,7 +360,7 @@ template <int dim>
 FrictionalNodeRows<dim> frictionalRows(const FrictionalNodeInput<dim>& in, ContactState state,
                                        const FrictionalParameters& p) {
   checkParameters(in.D, p);
-  COULOMB_REQUIRE(isActive(state), "contact: frictional rows of an inactive node");
+  COULOMB_CHECK(isActive(state), "contact: frictional rows of an inactive node");
   constexpr int N = kFrictionalInputs<dim>;
   using Fad = Sacado::Fad::SFad<double, N>;
   std::array<Fad, dim> r, n, w;
@@ -380,7 +380,7 @@ FrictionalNodeRows<dim> frictionalRows(const FrictionalNodeInput<dim>& in, Conta
   rows[f.gapSlot] = f.gapRowSign * p.epsN * t * gap;
   std::array<Fad, dim> direction{}, directionU{};
   Fad threshold = 0.0;
-  if (state == kSlip) {
+  if (state == ContactState::Slip) {
     slipDirection<dim, Fad>(terms, D, in, p, direction, directionU);
     threshold = terms.numDriven > 0 ? terms.threshold : frictionThreshold(p.law, terms.augmentedNormal);
     out.direction = worldVector<dim, Fad>(terms, direction, directionU);
@@ -442,7 +442,7 @@ ContactState penaltyFrictionalState(const PenaltyFrictionalInput<dim>& in, Conta
   std::array<double, dim> trial{}, traction{};
   penaltyTerms<dim, double>(in.normal, in.slip, in.D, in.gap, in.oldTraction, ContactState::Stick, p, pressure, trial,
                             traction, trialNorm, threshold);
-  if (p.pureSlip) return kSlip;  // the traction threshold × trial / |trial|: against the slip
+  if (p.pureSlip) return ContactState::Slip;  // the traction threshold × trial / |trial|: against the slip
   return stickSlipState(trialNorm, threshold, isActive(previous) ? previous : ContactState::Stick, p.slipThreshold);
 }
 
@@ -450,7 +450,7 @@ template <int dim>
 PenaltyFrictionalForce<dim> penaltyFrictionalForce(const PenaltyFrictionalInput<dim>& in, ContactState state,
                                                    const FrictionalParameters& p) {
   checkParameters(in.D, p);
-  COULOMB_REQUIRE(isActive(state), "contact: penalty frictional force of an inactive node");
+  COULOMB_CHECK(isActive(state), "contact: penalty frictional force of an inactive node");
   constexpr int N = kPenaltyFrictionalInputs<dim>;
   using Fad = Sacado::Fad::SFad<double, N>;
   std::array<Fad, dim> n, w;

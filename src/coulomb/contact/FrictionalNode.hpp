@@ -135,7 +135,7 @@ template <int dim>
 FrictionalNodeState<dim> frictionalState(const FrictionalNodeInput<dim>& in, ContactState previous,
                                          const FrictionalParameters& p);
 
-/// @brief The condensed rows of an active node (state Active = slip, or
+/// @brief The condensed rows of an active node (state Slip or
 /// Stick) and the recovered multiplier, with derivatives.
 template <int dim>
 struct FrictionalNodeRows {
@@ -186,12 +186,12 @@ struct PenaltyFrictionalForce {
 };
 
 /// @brief Penalty rule: Inactive when g~ > 0; else Stick when |t*| <= Θ
-/// (hysteresis as stickSlipState for a node already slipping), Active (slip) otherwise.
+/// (hysteresis as stickSlipState for a node already slipping), Slip otherwise.
 template <int dim>
 ContactState penaltyFrictionalState(const PenaltyFrictionalInput<dim>& in, ContactState previous,
                                     const FrictionalParameters& p);
 
-/// @brief The force of an active penalty node in `state` (Active = slip, or Stick).
+/// @brief The force of an active penalty node in `state` (Slip or Stick).
 template <int dim>
 PenaltyFrictionalForce<dim> penaltyFrictionalForce(const PenaltyFrictionalInput<dim>& in, ContactState state,
                                                    const FrictionalParameters& p);

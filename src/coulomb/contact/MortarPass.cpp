@@ -39,7 +39,7 @@ void addRow(DerivativeRow& to, const DerivativeRow& from) {
 }  // namespace
 
 void NodalMortarEntry::add(const NodalMortarEntry& other) {
-  COULOMB_REQUIRE(node == other.node, "internal: adding mortar entries of different nodes");
+  COULOMB_CHECK(node == other.node, "adding mortar entries of different nodes");
   D += other.D;
   gap += other.gap;
   for (const auto& [l, value] : other.M) M[l] += value;
@@ -105,7 +105,7 @@ InputChain buildChain(int dim, const ContactFace& slave, const ContactFace& mast
   for (int a = 0; a < nS; ++a) {
     for (int c = 0; c < dim; ++c) chain[a * dim + c].push_back({{slave.nodes[a], c}, 1.0});
     const NodalNormal& n = normals[contact.slaveNodeIndex(slave.nodes[a])];
-    COULOMB_REQUIRE(!n.derivative.empty(), "internal: mortar pass needs the normal derivative at node " +
+    COULOMB_CHECK(!n.derivative.empty(), "mortar pass needs the normal derivative at node " +
                                                std::to_string(slave.nodes[a] + 1));
     for (int k = 0; k < dim; ++k)
       for (const NormalDerivative& d : n.derivative)
@@ -159,7 +159,7 @@ FaceNodes<F, double> faceNormals(const ContactFace& f, const ContactInterface& c
   FaceNodes<F, double> out{};
   for (int a = 0; a < FaceTraits<F>::nodes; ++a) {
     const int i = contact.slaveNodeIndex(f.nodes[a]);
-    COULOMB_REQUIRE(i >= 0, "internal: slave face node is no slave node");
+    COULOMB_CHECK(i >= 0, "slave face node is no slave node");
     for (int c = 0; c < FaceTraits<F>::spaceDim; ++c) out[a][c] = normals[i].n[c];
   }
   return out;
@@ -224,9 +224,9 @@ void integratePair(const PairContext& p, const ContactFace& s, const ContactFace
 NodalMortarQuantities integrateMortarPass(const ContactInterface& contact, const InterfaceConfiguration& x,
                                           const std::vector<NodalNormal>& normals, const SearchResult& pairs,
                                           bool withDerivatives, double relativeTolerance) {
-  COULOMB_REQUIRE(normals.size() == contact.slaveNodes().size(),
-                  "internal: mortar pass needs one nodal normal per slave node");
-  COULOMB_REQUIRE(x.dimension == contact.dimension(), "internal: configuration dimension mismatch");
+  COULOMB_CHECK(normals.size() == contact.slaveNodes().size(),
+                  "mortar pass needs one nodal normal per slave node");
+  COULOMB_CHECK(x.dimension == contact.dimension(), "configuration dimension mismatch");
   std::map<long long, NodalMortarEntry> out;
   const PairContext context{contact, x, normals, withDerivatives, relativeTolerance, out};
   for (std::size_t k = 0; k < pairs.slaveFaces.size(); ++k) {
@@ -331,7 +331,7 @@ NodalMortarQuantities sumToOwners(const ContactInterface& contact, const NodalMo
   std::vector<std::vector<double>> send(static_cast<std::size_t>(size));
   for (const NodalMortarEntry& e : local.entries) {
     const int i = contact.slaveNodeIndex(e.node);
-    COULOMB_REQUIRE(i >= 0 && owner[i] >= 0, "internal: mortar entry of node " + std::to_string(e.node + 1) +
+    COULOMB_CHECK(i >= 0 && owner[i] >= 0, "mortar entry of node " + std::to_string(e.node + 1) +
                                                  " without an owning rank");
     pack(send[owner[i]], e);
   }

@@ -11,9 +11,9 @@ namespace coulomb::contact {
 namespace {
 
 void checkParameters(const AlmParameters& p) {
-  COULOMB_REQUIRE(p.k > 0.0, "contact ALM: scale factor k must be > 0, got " << p.k);
-  COULOMB_REQUIRE(p.epsN > 0.0, "contact ALM: normal penalty must be > 0, got " << p.epsN);
-  COULOMB_REQUIRE(p.epsTau > 0.0, "contact ALM: tangential penalty must be > 0, got " << p.epsTau);
+  COULOMB_CHECK(p.k > 0.0, "contact ALM: scale factor k must be > 0, got " << p.k);
+  COULOMB_CHECK(p.epsN > 0.0, "contact ALM: normal penalty must be > 0, got " << p.epsN);
+  COULOMB_CHECK(p.epsTau > 0.0, "contact ALM: tangential penalty must be > 0, got " << p.epsTau);
 }
 
 template <int dim>
@@ -28,7 +28,7 @@ double dot(const NVec<dim>& a, const NVec<dim>& b) {
 template <int dim>
 AlmNodeResidual<dim> almResidual(const AlmNodeInput<dim>& in, const AlmParameters& p, ContactState state) {
   checkParameters(p);
-  COULOMB_REQUIRE(in.D > 0.0, "contact ALM: nodal mortar weight D_j must be > 0, got " << in.D);
+  COULOMB_CHECK(in.D > 0.0, "contact ALM: nodal mortar weight D_j must be > 0, got " << in.D);
   const NVec<dim>& n = in.normal;
   const NVec<dim>& lam = in.lambda;
   const double k2 = p.k * p.k;
@@ -47,7 +47,7 @@ AlmNodeResidual<dim> almResidual(const AlmNodeInput<dim>& in, const AlmParameter
       out.dNormal[i][c] = cTau * ((i == c ? ln : 0.0) + n[i] * lam[c]);
     }
   }
-  if (state == ContactState::Active) {
+  if (state == ContactState::Slip) {
     // Normal part k g~ n: d/dg~ = k n, d/dn = k g~ I.
     for (int i = 0; i < dim; ++i) {
       out.r[i] += p.k * in.gap * n[i];
@@ -104,7 +104,7 @@ NodalForce<dim> almMasterForce(const NVec<dim>& lambda, double Mjl, double k) {
 
 template <int dim>
 NodalForce<dim> penaltySlaveForce(const NVec<dim>& normal, double gap, double epsN) {
-  COULOMB_REQUIRE(epsN > 0.0, "contact penalty: normal penalty must be > 0, got " << epsN);
+  COULOMB_CHECK(epsN > 0.0, "contact penalty: normal penalty must be > 0, got " << epsN);
   NodalForce<dim> out;
   const double pen = std::max(-gap, 0.0);        // <-g~>
   const double h = gap < 0.0 ? 1.0 : 0.0;        // -d<-g~>/dg~ (taken 0 at g~ = 0)
@@ -118,8 +118,8 @@ NodalForce<dim> penaltySlaveForce(const NVec<dim>& normal, double gap, double ep
 
 template <int dim>
 NodalForce<dim> penaltyMasterForce(const NVec<dim>& normal, double gap, double D, double Mjl, double epsN) {
-  COULOMB_REQUIRE(epsN > 0.0, "contact penalty: normal penalty must be > 0, got " << epsN);
-  COULOMB_REQUIRE(D > 0.0, "contact penalty: nodal mortar weight D_j must be > 0, got " << D);
+  COULOMB_CHECK(epsN > 0.0, "contact penalty: normal penalty must be > 0, got " << epsN);
+  COULOMB_CHECK(D > 0.0, "contact penalty: nodal mortar weight D_j must be > 0, got " << D);
   NodalForce<dim> out;
   const double pen = std::max(-gap, 0.0);
   const double h = gap < 0.0 ? 1.0 : 0.0;
@@ -135,9 +135,9 @@ NodalForce<dim> penaltyMasterForce(const NVec<dim>& normal, double gap, double D
 }
 
 double defaultPenalty(double E, double h, double factor) {
-  COULOMB_REQUIRE(E > 0.0, "contact penalty: Young's modulus must be > 0, got " << E);
-  COULOMB_REQUIRE(h > 0.0, "contact penalty: element size must be > 0, got " << h);
-  COULOMB_REQUIRE(factor > 0.0, "contact penalty: penalty factor must be > 0, got " << factor);
+  COULOMB_CHECK(E > 0.0, "contact penalty: Young's modulus must be > 0, got " << E);
+  COULOMB_CHECK(h > 0.0, "contact penalty: element size must be > 0, got " << h);
+  COULOMB_CHECK(factor > 0.0, "contact penalty: penalty factor must be > 0, got " << factor);
   return factor * E / h;
 }
 

@@ -94,7 +94,7 @@ struct AlmNodeResidual {
 };
 
 /// @brief ALM frictionless multiplier residual of node j in the given state
-/// (formula in the file comment). Throws coulomb::Error for D <= 0 or
+/// (formula in the file comment). Throws coulomb::InternalError for D <= 0 or
 /// non-positive parameters.
 template <int dim>
 AlmNodeResidual<dim> almResidual(const AlmNodeInput<dim>& in, const AlmParameters& p, ContactState state);

@@ -125,16 +125,16 @@ FaceNodes<F, T> faceCornerNormals(const FaceNodes<F, T>& x) {
 }
 
 NodalNormal averagedNormal(int dimension, const std::vector<FaceAtNode>& faces, bool withDerivative) {
-  COULOMB_REQUIRE(!faces.empty(), "internal: averagedNormal without faces");
-  COULOMB_REQUIRE(dimension == 2 || dimension == 3, "internal: averagedNormal in dimension " << dimension);
+  COULOMB_CHECK(!faces.empty(), "averagedNormal without faces");
+  COULOMB_CHECK(dimension == 2 || dimension == 3, "averagedNormal in dimension " << dimension);
   const long long node = faces.front().nodes[faces.front().corner];
   NodalNormal result;
   std::array<double, 3> s{};
   std::vector<NormalDerivative> ds;
   try {
     for (const FaceAtNode& face : faces) {
-      COULOMB_REQUIRE((face.type == FaceType::Line2) == (dimension == 2),
-                      "internal: face type does not match dimension " << dimension);
+      COULOMB_CHECK((face.type == FaceType::Line2) == (dimension == 2),
+                      "face type does not match dimension " << dimension);
       std::vector<NormalDerivative>* target = withDerivative ? &ds : nullptr;
       switch (face.type) {
         case FaceType::Line2: addFace<FaceType::Line2>(face, s, target); break;
@@ -175,8 +175,8 @@ NodalNormal averagedNormal(int dimension, const std::vector<FaceAtNode>& faces, 
 std::vector<NodalNormal> computeNodalNormals(const ContactInterface& contact, const InterfaceConfiguration& x,
                                              bool withDerivatives, const std::vector<int>* slaveNodeIndices) {
   const int dim = contact.dimension();
-  COULOMB_REQUIRE(x.dimension == dim && x.x.size() == contact.interfaceNodes().size() * dim,
-                  "internal: interface configuration does not match the contact interface");
+  COULOMB_CHECK(x.dimension == dim && x.x.size() == contact.interfaceNodes().size() * dim,
+                  "interface configuration does not match the contact interface");
   const std::size_t numSlaveNodes = contact.slaveNodes().size();
   std::vector<NodalNormal> normals(numSlaveNodes);
   const auto& offset = contact.slaveNodeFaceOffsets();
@@ -205,7 +205,7 @@ std::vector<NodalNormal> computeNodalNormals(const ContactInterface& contact, co
   };
   if (slaveNodeIndices) {
     for (int i : *slaveNodeIndices) {
-      COULOMB_REQUIRE(i >= 0 && static_cast<std::size_t>(i) < numSlaveNodes, "internal: slave node index " << i);
+      COULOMB_CHECK(i >= 0 && static_cast<std::size_t>(i) < numSlaveNodes, "slave node index " << i);
       compute(i);
     }
   } else {

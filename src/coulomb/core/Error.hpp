@@ -1,6 +1,7 @@
 #pragma once
 /// @file Error.hpp
-/// @brief The one exception type a user sees, and the two checking macros.
+/// @brief What a user can fix (coulomb::Error) apart from what is a bug
+/// (coulomb::InternalError), and the checking macros.
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -26,7 +27,27 @@ public:
   using Error::Error;
 };
 
+/// @brief A broken internal invariant: a bug in Coulomb, not in the input.
+/// `main` reports it as such, with the rank, and aborts every rank (the
+/// other ranks may not have failed). Never caught to retry or to cut back.
+class InternalError : public std::logic_error {
+public:
+  explicit InternalError(const std::string& message) : std::logic_error(message) {}
+};
+
 }  // namespace coulomb
+
+/// Always-on check of an internal invariant: throws coulomb::InternalError
+/// with the streamed message and the source location.
+/// Example: COULOMB_CHECK(z.size() == owned.size(), "one multiplier per owned slave node");
+#define COULOMB_CHECK(condition, message)                                                                   \
+  do {                                                                                                      \
+    if (!(condition)) {                                                                                     \
+      std::ostringstream coulomb_check_stream_;                                                             \
+      coulomb_check_stream_ << message << " (" << __FILE__ << ":" << __LINE__ << ")";                       \
+      throw ::coulomb::InternalError(coulomb_check_stream_.str());                                          \
+    }                                                                                                       \
+  } while (false)
 
 /// Always-on check: throws coulomb::Error with a streamed message.
 /// Example: COULOMB_REQUIRE(E > 0, "Materials/steel: Young's Modulus must be > 0, got " << E);
@@ -44,8 +65,8 @@ public:
 #define COULOMB_ASSERT(condition)                                                    \
   do {                                                                               \
     if (!(condition))                                                                \
-      throw std::logic_error(std::string("internal error: ") + #condition + " at " + \
-                             __FILE__ + ":" + std::to_string(__LINE__));             \
+      throw ::coulomb::InternalError(std::string(#condition) + " at " + __FILE__ + ":" + \
+                                     std::to_string(__LINE__));                     \
   } while (false)
 #else
 #define COULOMB_ASSERT(condition) \

@@ -48,15 +48,15 @@ bool anyRank(const Teuchos::Comm<int>& comm, bool local) {
 
 std::vector<double> exchangeByRank(const Teuchos::Comm<int>& comm, std::vector<std::vector<double>> send) {
   const int size = comm.getSize();
-  COULOMB_REQUIRE(static_cast<int>(send.size()) == size, "internal: exchangeByRank needs one buffer per rank");
+  COULOMB_CHECK(static_cast<int>(send.size()) == size, "exchangeByRank needs one buffer per rank");
   if (size == 1) return std::move(send[0]);
   const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
-  COULOMB_REQUIRE(mpi != nullptr, "internal: Coulomb needs an MPI Teuchos communicator");
+  COULOMB_CHECK(mpi != nullptr, "Coulomb needs an MPI Teuchos communicator");
   const MPI_Comm raw = *mpi->getRawMpiComm();
   std::vector<int> sendCounts(size), sendOffsets(size + 1, 0), recvCounts(size), recvOffsets(size + 1, 0);
   std::vector<double> flat;
   for (int r = 0; r < size; ++r) {
-    COULOMB_REQUIRE(send[r].size() < static_cast<std::size_t>(1) << 30, "internal: exchange buffer too large");
+    COULOMB_CHECK(send[r].size() < static_cast<std::size_t>(1) << 30, "exchange buffer too large");
     sendCounts[r] = static_cast<int>(send[r].size());
     sendOffsets[r + 1] = sendOffsets[r] + sendCounts[r];
     flat.insert(flat.end(), send[r].begin(), send[r].end());

@@ -211,7 +211,7 @@ auto dispatchCell(CellType type, Visitor&& visit) {
     case CellType::Hex8: return visit(std::integral_constant<CellType, CellType::Hex8>{});
     case CellType::Tet4: return visit(std::integral_constant<CellType, CellType::Tet4>{});
   }
-  throw Error("internal: unknown cell type");
+  throw InternalError("unknown cell type");
 }
 
 }  // namespace
@@ -269,9 +269,9 @@ Assembler::Assembler(const mesh::Mesh& mesh, const DofMap& dofs, const ModelSett
       bool touchesOwned = false;
       for (int a = 0; a < n; ++a) touchesOwned |= mesh.localNode(cell[a]) < numOwnedNodes;
       for (int a = 0; a < n && touchesOwned; ++a)
-        COULOMB_REQUIRE(impl_->ownedColumn[dofs.localDof(mesh.localNode(cell[a]), 0)] >= 0 &&
+        COULOMB_CHECK(impl_->ownedColumn[dofs.localDof(mesh.localNode(cell[a]), 0)] >= 0 &&
                             impl_->ownedColumn[dofs.localDof(mesh.localNode(cell[a]), dim - 1)] >= 0,
-                        "internal: node " << cell[a] + 1 << " of element " << element + 1
+                        "node " << cell[a] + 1 << " of element " << element + 1
                                           << " is missing from the owned tangent's column map");
     }
   }
@@ -337,8 +337,8 @@ AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residua
   TangentTarget K;
   if (jacobian) {
     // The entry scan of acceptsTangent (O(nnz)) is the caller's: here only its cheap part.
-    COULOMB_REQUIRE(extendsOwnedColumns(*m.ownedGraph, *jacobian),
-                    "internal: the tangent must be made by Assembler::createMatrix or accepted by acceptsTangent");
+    COULOMB_CHECK(extendsOwnedColumns(*m.ownedGraph, *jacobian),
+                    "the tangent must be made by Assembler::createMatrix or accepted by acceptsTangent");
     jacobian->resumeFill();
     jacobian->setAllToScalar(0.0);
     m.ghostMatrix->resumeFill();

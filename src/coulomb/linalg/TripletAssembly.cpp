@@ -46,7 +46,7 @@ std::vector<double> toOwners(const std::vector<double>& records, int width, cons
   const int size = comm.getSize();
   const std::size_t n = records.size() / width;
   if (size == 1) {  // one rank owns every row of the DoF map: a record here is outside it
-    COULOMB_REQUIRE(records.empty(), "internal: contribution to row " << static_cast<GlobalOrdinal>(records[0])
+    COULOMB_CHECK(records.empty(), "contribution to row " << static_cast<GlobalOrdinal>(records[0])
                                                                       << " outside the DoF map");
     return {};
   }

@@ -78,7 +78,7 @@ std::size_t Mesh::blockOfElement(long long globalElement) const {
     const auto& block = global_->blocks[b];
     if (globalElement >= block.firstElement && globalElement < block.firstElement + block.numElements()) return b;
   }
-  throw Error("internal: element " + std::to_string(globalElement) + " is in no block");
+  throw InternalError("element " + std::to_string(globalElement) + " is in no block");
 }
 
 }  // namespace coulomb::mesh

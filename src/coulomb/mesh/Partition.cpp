@@ -14,7 +14,7 @@ namespace {
 
 MPI_Comm rawComm(const Teuchos::Comm<int>& comm) {
   const auto* mpiComm = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
-  COULOMB_REQUIRE(mpiComm != nullptr, "internal: Coulomb needs an MPI Teuchos communicator");
+  COULOMB_CHECK(mpiComm != nullptr, "Coulomb needs an MPI Teuchos communicator");
   return *mpiComm->getRawMpiComm();
 }
 

@@ -185,7 +185,7 @@ void ModelEvaluator::evalContact(const Vector& x, Vector* f, const Teuchos::RCP<
     if (inPlace || tangent.get() != bulkTangent_.get()) bulkTangent_ = Teuchos::null;
     using ThyraOp = Thyra::TpetraLinearOp<Scalar, LocalOrdinal, GlobalOrdinal, typename CrsMatrix::node_type>;
     auto* op = dynamic_cast<ThyraOp*>(W.get());
-    COULOMB_REQUIRE(op != nullptr, "internal: the Jacobian operator is not a Thyra::TpetraLinearOp");
+    COULOMB_CHECK(op != nullptr, "the Jacobian operator is not a Thyra::TpetraLinearOp");
     op->initialize(space_, space_, tangent);
   }
 }

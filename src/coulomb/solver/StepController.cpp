@@ -9,8 +9,8 @@ namespace coulomb::solver {
 
 StepController::StepController(const Settings& settings, const std::vector<double>& knots)
     : settings_(settings), nominal_(settings.finalTime / settings.numberOfSteps), size_(nominal_) {
-  COULOMB_REQUIRE(settings.finalTime > 0 && settings.numberOfSteps > 0,
-                  "internal: load stepping needs a positive final time and step count");
+  COULOMB_CHECK(settings.finalTime > 0 && settings.numberOfSteps > 0,
+                  "load stepping needs a positive final time and step count");
   const double T = settings.finalTime;
   // Two points closer than this are one (knots placed at a step end in
   // decimal arithmetic, e.g. 0.3 against 3 * 0.1).
@@ -40,7 +40,7 @@ StepController::StepController(const Settings& settings, const std::vector<doubl
 }
 
 double StepController::nextTime() const {
-  COULOMB_REQUIRE(!finished(), "internal: no load step left");
+  COULOMB_CHECK(!finished(), "no load step left");
   const double target = landing_[next_];
   const double distance = target - time_;
   // Equal sub-steps of at most size_ to the landing point; the small slack

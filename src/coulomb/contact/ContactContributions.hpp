@@ -1,0 +1,64 @@
+#pragma once
+/// @file ContactContributions.hpp
+/// @brief What the contact pairs add to the Newton system at an iterate
+/// (ContactPair.hpp has the formulas) and the figures of an update.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "coulomb/contact/ActiveSet.hpp"
+#include "coulomb/linalg/TripletAssembly.hpp"
+
+namespace coulomb::contact {
+
+/// @brief The Newton system with the multipliers as unknowns (deck
+/// `Contact/System Form` = Saddle Point; formulation/SaddlePoint.cpp): per
+/// slave node j a vector unknown z_j = (k / eps_n) lambda_j (a length, so that
+/// its columns t eps_n D_j are of the size of the stiffness), and the rows
+/// R_j = (eps_n t / k) r_lambda_j of NodalContactLaw (4.72b, components form):
+///   [K + K_c   C] [du]     [r - f_c]
+///   [  R_u   R_z] [dz] = - [  R    ]
+struct MultiplierBlock {
+  std::vector<linalg::MatrixTriplet> columns;  ///< C = -d f_c / d z (displacement rows)
+  std::vector<linalg::MatrixTriplet> rows;     ///< d R / d (u, z) (multiplier rows)
+  std::vector<linalg::VectorEntry> residual;   ///< R (multiplier rows)
+};
+
+/// @brief Contributions of one or more pairs to the condensed system.
+struct ContactContributions {
+  std::vector<linalg::MatrixTriplet> transform;   ///< T - I
+  /// Added to T - I for the tangent only: frictional rows are nonlinear in
+  /// the bulk residual r (their value is in constraintResidual, their
+  /// derivative with respect to r combines rows of K here).
+  std::vector<linalg::MatrixTriplet> tangentTransform;
+  std::vector<linalg::MatrixTriplet> constraint;  ///< G
+  std::vector<linalg::VectorEntry> constraintResidual;  ///< g
+  std::vector<linalg::MatrixTriplet> contactStiffness;  ///< K_c
+  std::vector<linalg::VectorEntry> contactResidual;     ///< -f_c (penalty pairs)
+  /// f_c on prescribed DoFs (interface nodes on a Dirichlet set): not in the
+  /// system (those rows are u - u_bar), carried by the support
+  /// (ContactModel::subtractPrescribedForces).
+  std::vector<linalg::VectorEntry> prescribedForce;
+  MultiplierBlock multipliers;  ///< System Form = Saddle Point (then transform etc. stay empty)
+};
+
+/// @brief Per-update figures of one pair, summed over ranks.
+struct PairIterationSummary {
+  ActiveSetSummary activeSet;
+  double normalResidual2 = 0;  ///< sum of (eps_n t g~_j)^2 over active ALM nodes
+  double contactForce2 = 0;    ///< sum of |f_j|^2 over active slave nodes
+  double stickResidual2 = 0;   ///< sum of the squared stick rows (frictional pairs)
+  double slipResidual2 = 0;    ///< sum of the squared slip rows (frictional pairs)
+  double tangentialForce2 = 0;  ///< sum of |tangential part of f_j|^2 over active slave nodes (frictional pairs)
+  std::array<double, 3> slaveForce{};  ///< total contact force on the slave body
+  std::array<double, 3> normalForce{};  ///< its normal part, sum of the nodal normal forces
+  std::array<double, 3> tangentialForce{};  ///< its tangential part
+  /// Nodes whose frozen state (simplified semi-smooth Newton) disagrees with
+  /// the update rule at this iterate; 0 when the set was updated.
+  long long violations = 0;
+  /// A hash of every slave node's state (the same on every rank and for any
+  /// partition): equal sets have equal signatures (ActiveSetCycle).
+  std::uint64_t setSignature = 0;
+};
+
+}  // namespace coulomb::contact

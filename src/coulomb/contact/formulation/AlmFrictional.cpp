@@ -1,0 +1,179 @@
+/// @file AlmFrictional.cpp
+/// @brief ALM and MPC with friction, condensed: the active and stick/slip
+/// sets (4.73-4.77) and the condensed rows of FrictionalNode.hpp, chained
+/// with the derivatives of the mortar quantities and of the weighted slip.
+/// docs/architecture.md, "Frictional contact", has the system. Contact
+/// forces on prescribed DoFs (slave nodes on a Dirichlet set, with the
+/// friction of their driven directions, and masters) are listed apart
+/// (ContactContributions::prescribedForce): the supports carry them.
+#include <cmath>
+
+#include "coulomb/contact/FrictionalNode.hpp"
+#include "coulomb/contact/formulation/Formulations.hpp"
+
+namespace coulomb::contact {
+
+namespace {
+
+template <int dim>
+class AlmFrictional final : public Formulation {
+public:
+  explicit AlmFrictional(const PairConstants& c) : c_(c) {
+    const ContactPairSettings& s = *c.settings;
+    p_.k = c.k;  // eps_n, eps_tau and mu are the node's: parameters()
+    p_.thickness = c.thickness;
+    p_.slipAugmentation = s.slipAugmentation;
+    p_.slipThreshold = s.slipThreshold;
+    // 1e-10 of the slave face size: far above the round-off of the
+    // coordinates, far below any slip that matters.
+    p_.roundOffSlip = 1e-10 * c.faceSize;
+    p_.touchingGap = c.touchingGap();
+    p_.law = s.friction;
+    p_.multiPointConstraint = s.formulation == ContactFormulation::MPC;
+    p_.slipDirectionFromSlip = s.slipResetFrequency < 0;
+    p_.pureSlip = s.pureSlip;
+  }
+
+  bool usesResidual() const override { return true; }
+  bool usesSlip() const override { return true; }
+
+  ContactState decide(const SlaveNode& n, ContactState previous, bool updateSet,
+                      PairIterationSummary& summary) const override {
+    auto decided = frictionalState<dim>(input(n, *n.mortar, *n.normal), previous, parameters(n));
+    const ContactState state = nextState(decided.state, previous, updateSet, summary.violations);
+    if (!isActive(state)) decided = FrictionalNodeState<dim>{};
+    n.state->lambdaN = decided.lambdaN;
+    n.state->pressure = -c_.k * decided.lambdaN;
+    n.state->traction = {0.0, 0.0, 0.0};
+    for (int c = 0; c < dim; ++c) n.state->traction[c] = decided.traction[c];
+    return state;
+  }
+
+  void emit(const SlaveNode& n, RowSink& sink, PairIterationSummary& summary) const override {
+    if (!isActive(n.state->state) || n.mortarDerivative == nullptr) return;
+    const NodalMortarEntry& entry = *n.mortarDerivative;
+    const NodalNormal& normal = *n.normalDerivative;
+    const auto& dw = *n.slipDerivative;
+    const auto k = frictionalRows<dim>(input(n, entry, normal), n.state->state, parameters(n));
+    if (!k.usable) return;
+    for (int c = 0; c < dim; ++c) n.state->slipDirection[c] = k.direction[c];
+    const double t = c_.thickness, kt = c_.k * t;
+    const auto& nv = normal.n;
+    auto& out = sink.out;
+
+    // Forces and residual figures: the recovered traction acts on the slave.
+    double tn = 0;
+    for (int c = 0; c < dim; ++c) tn += k.lambda[c] * nv[c];
+    for (int c = 0; c < dim; ++c) {
+      const double force = kt * entry.D * k.lambda[c];
+      const double normalPart = kt * entry.D * tn * nv[c];
+      summary.slaveForce[c] += force;
+      summary.normalForce[c] += normalPart;
+      summary.tangentialForce[c] += force - normalPart;
+      summary.contactForce2 += force * force;
+      summary.tangentialForce2 += (force - normalPart) * (force - normalPart);
+    }
+
+    // The explicit part of d(row)/dx: through n, w, D and g~ (the r part is
+    // tangentTransform). Kernel inputs: r [0, dim), n [dim, 2 dim), w [2 dim, 3 dim), D, g~.
+    auto explicitRow = [&](const std::array<double, kFrictionalInputs<dim>>& d) {
+      DerivativeRow row;
+      std::array<double, dim> alongNormal{};
+      for (int m = 0; m < dim; ++m) alongNormal[m] = d[dim + m];
+      addNormalDerivative(row, normal, alongNormal);
+      addScaled(row, entry.dD, d[3 * dim]);
+      for (int m = 0; m < dim; ++m) addScaled(row, dw[m], d[2 * dim + m]);
+      addScaled(row, entry.dGap, d[3 * dim + 1]);
+      return row;
+    };
+
+    // Slave rows: the bulk row is replaced (T - I = -1), the value goes to g.
+    // A prescribed component keeps its row; its force goes to the support.
+    for (int c = 0; c < dim; ++c) {
+      const GlobalOrdinal target = sink.row(n.node, c);
+      if (n.prescribed[c]) {
+        out.prescribedForce.push_back({target, kt * entry.D * k.lambda[c]});
+        continue;
+      }
+      out.transform.push_back({target, target, -1.0});
+      out.constraintResidual.push_back({target, k.rows[c]});
+      for (int m = 0; m < dim; ++m)
+        if (!n.prescribed[m] && k.dRows[c][m] != 0.0)
+          out.tangentTransform.push_back({target, sink.row(n.node, m), k.dRows[c][m]});
+      sink.add(out.constraint, target, explicitRow(k.dRows[c]));
+    }
+    // The (4.78) groups: the gap slot's row (the free component with the
+    // largest |n_c|) is the normal one, the other free slots stick or slip.
+    {
+      double gapRow2 = 0, others2 = 0, largest = -1;
+      int gapSlot = -1;
+      for (int c = 0; c < dim; ++c)
+        if (!n.prescribed[c] && std::abs(nv[c]) > largest) {
+          largest = std::abs(nv[c]);
+          gapSlot = c;
+        }
+      for (int c = 0; c < dim; ++c) {
+        if (n.prescribed[c]) continue;
+        (c == gapSlot ? gapRow2 : others2) += k.rows[c] * k.rows[c];
+      }
+      summary.normalResidual2 += gapRow2;
+      (n.state->state == ContactState::Stick ? summary.stickResidual2 : summary.slipResidual2) += others2;
+    }
+    // Master rows: + k t M_jl lambda_j (the recovered force, acting on the master as -f).
+    // lambda depends on w and g~ only along driven directions (FrictionalNode.hpp).
+    for (const auto& [master, Mjl] : entry.M)
+      for (int c = 0; c < dim; ++c) {
+        const GlobalOrdinal target = sink.row(master, c);
+        if (sink.prescribed(master, c)) {
+          out.prescribedForce.push_back({target, -kt * Mjl * k.lambda[c]});
+          continue;
+        }
+        out.constraintResidual.push_back({target, kt * Mjl * k.lambda[c]});
+        for (int m = 0; m < dim; ++m)
+          if (!n.prescribed[m] && k.dLambda[c][m] != 0.0)
+            out.tangentTransform.push_back({target, sink.row(n.node, m), kt * Mjl * k.dLambda[c][m]});
+        DerivativeRow row = explicitRow(k.dLambda[c]);
+        for (auto& [key, value] : row) value *= Mjl;
+        const auto dM = entry.dM.find(master);
+        if (dM != entry.dM.end()) addScaled(row, dM->second, k.lambda[c]);
+        sink.add(out.constraint, target, row, kt);
+      }
+  }
+
+private:
+  FrictionalNodeInput<dim> input(const SlaveNode& n, const NodalMortarEntry& entry, const NodalNormal& normal) const {
+    FrictionalNodeInput<dim> in;
+    in.residual = first<dim>(n.residual);
+    in.normal = first<dim>(normal.n);
+    in.slip = first<dim>(n.slip);
+    in.D = entry.D;
+    in.gap = entry.gap;
+    in.prescribed = first<dim>(n.prescribed);
+    in.driven = first<dim>(n.driven);
+    in.oldTraction = first<dim>(n.stepStart->traction);
+    in.lastSlip = first<dim>(n.lastStepSlip);
+    in.previousDirection = first<dim>(n.state->slipDirection);
+    return in;
+  }
+  FrictionalParameters parameters(const SlaveNode& n) const {
+    FrictionalParameters p = p_;
+    p.law.coefficient = n.frictionCoefficient;
+    p.epsN = n.epsN;
+    p.epsTau = c_.settings->tangentFactor * n.epsN;
+    return p;
+  }
+
+  PairConstants c_;
+  FrictionalParameters p_;
+};
+
+}  // namespace
+
+template <int dim>
+std::unique_ptr<Formulation> makeAlmFrictional(const PairConstants& constants) {
+  return std::make_unique<AlmFrictional<dim>>(constants);
+}
+template std::unique_ptr<Formulation> makeAlmFrictional<2>(const PairConstants&);
+template std::unique_ptr<Formulation> makeAlmFrictional<3>(const PairConstants&);
+
+}  // namespace coulomb::contact

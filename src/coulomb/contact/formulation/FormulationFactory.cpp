@@ -1,0 +1,29 @@
+#include "coulomb/contact/formulation/Formulations.hpp"
+#include "coulomb/core/Error.hpp"
+
+namespace coulomb::contact {
+
+namespace {
+
+template <int dim>
+std::unique_ptr<Formulation> make(const PairConstants& constants, ContactSystemForm form) {
+  const ContactPairSettings& s = *constants.settings;
+  // The deck's check (parseContactSettings) keeps the saddle-point form to ALM frictionless pairs.
+  if (form == ContactSystemForm::SaddlePoint) {
+    COULOMB_CHECK(s.formulation == ContactFormulation::ALM && !s.frictional(),
+                  "the saddle-point form is for ALM frictionless pairs");
+    return makeSaddlePoint<dim>(constants);
+  }
+  const bool penalty = s.formulation == ContactFormulation::Penalty;
+  if (s.frictional()) return penalty ? makePenaltyFrictional<dim>(constants) : makeAlmFrictional<dim>(constants);
+  return penalty ? makePenaltyFrictionless<dim>(constants) : makeAlmFrictionless<dim>(constants);
+}
+
+}  // namespace
+
+std::unique_ptr<Formulation> makeFormulation(int dim, const PairConstants& constants, ContactSystemForm form) {
+  COULOMB_CHECK(dim == 2 || dim == 3, "contact in dimension " << dim);
+  return dim == 2 ? make<2>(constants, form) : make<3>(constants, form);
+}
+
+}  // namespace coulomb::contact

@@ -1,0 +1,36 @@
+#pragma once
+/// @file Formulations.hpp
+/// @brief The constructors of the formulations, one per file of this folder
+/// (FormulationFactory.cpp chooses). Each is a class template on the
+/// dimension, instantiated for 2 and 3 in its file.
+#include <memory>
+
+#include "coulomb/contact/formulation/Formulation.hpp"
+
+namespace coulomb::contact {
+
+/// ALM and MPC, frictionless, condensed (AlmFrictionless.cpp).
+template <int dim>
+std::unique_ptr<Formulation> makeAlmFrictionless(const PairConstants& constants);
+/// Penalty, frictionless (PenaltyFrictionless.cpp).
+template <int dim>
+std::unique_ptr<Formulation> makePenaltyFrictionless(const PairConstants& constants);
+/// ALM and MPC with friction, condensed (AlmFrictional.cpp).
+template <int dim>
+std::unique_ptr<Formulation> makeAlmFrictional(const PairConstants& constants);
+/// Penalty with friction (PenaltyFrictional.cpp).
+template <int dim>
+std::unique_ptr<Formulation> makePenaltyFrictional(const PairConstants& constants);
+/// ALM frictionless with the multipliers as unknowns (SaddlePoint.cpp).
+template <int dim>
+std::unique_ptr<Formulation> makeSaddlePoint(const PairConstants& constants);
+
+/// The first `dim` components of a 3-wide array.
+template <int dim, class T>
+std::array<T, dim> first(const std::array<T, 3>& v) {
+  std::array<T, dim> out{};
+  for (int c = 0; c < dim; ++c) out[c] = v[c];
+  return out;
+}
+
+}  // namespace coulomb::contact

@@ -1,0 +1,129 @@
+/// @file PenaltyFrictional.cpp
+/// @brief Penalty with friction (4.71a with a return map, FrictionalNode.hpp):
+/// the force f of the node's traction on the slave (residual -f,
+/// K_c = -df/dx through n, w, D, g~) and -(M_jl / D) f on the masters.
+#include "coulomb/contact/FrictionalNode.hpp"
+#include "coulomb/contact/formulation/Formulations.hpp"
+
+namespace coulomb::contact {
+
+namespace {
+
+template <int dim>
+class PenaltyFrictional final : public Formulation {
+public:
+  explicit PenaltyFrictional(const PairConstants& c) : c_(c) {
+    const ContactPairSettings& s = *c.settings;
+    p_.k = c.k;
+    p_.thickness = c.thickness;
+    p_.slipAugmentation = s.slipAugmentation;
+    p_.slipThreshold = s.slipThreshold;
+    p_.roundOffSlip = 1e-10 * c.faceSize;
+    p_.touchingGap = c.touchingGap();
+    p_.law = s.friction;
+    p_.pureSlip = s.pureSlip;
+  }
+
+  bool usesSlip() const override { return true; }
+
+  ContactState decide(const SlaveNode& n, ContactState previous, bool updateSet,
+                      PairIterationSummary& summary) const override {
+    const ContactState state = nextState(
+        penaltyFrictionalState<dim>(input(n, *n.mortar, *n.normal), previous, parameters(n)), previous, updateSet,
+        summary.violations);
+    // An active node's traction is set by emit() (a stale one until then).
+    if (!isActive(state)) n.state->traction = {0.0, 0.0, 0.0}, n.state->lambdaN = n.state->pressure = 0.0;
+    return state;
+  }
+
+  void emit(const SlaveNode& n, RowSink& sink, PairIterationSummary& summary) const override {
+    if (!isActive(n.state->state) || n.mortarDerivative == nullptr) return;
+    const NodalMortarEntry& entry = *n.mortarDerivative;
+    const NodalNormal& normal = *n.normalDerivative;
+    const auto& dw = *n.slipDerivative;
+    const auto& nv = normal.n;
+    const double D = entry.D;
+    const auto f = penaltyFrictionalForce<dim>(input(n, entry, normal), n.state->state, parameters(n));
+    n.state->pressure = f.pressure;
+    n.state->lambdaN = -f.pressure / c_.k;
+    n.state->traction = {0.0, 0.0, 0.0};
+    for (int c = 0; c < dim; ++c) n.state->traction[c] = f.traction[c] - f.pressure * nv[c];
+    double fn = 0;
+    for (int c = 0; c < dim; ++c) fn += f.force[c] * nv[c];
+    for (int c = 0; c < dim; ++c) {
+      summary.slaveForce[c] += f.force[c];
+      summary.normalForce[c] += fn * nv[c];
+      summary.tangentialForce[c] += f.force[c] - fn * nv[c];
+      summary.contactForce2 += f.force[c] * f.force[c];
+      summary.tangentialForce2 += (f.force[c] - fn * nv[c]) * (f.force[c] - fn * nv[c]);
+    }
+    // Kernel inputs: n [0, dim), w [dim, 2 dim), D, g~.
+    auto derivative = [&](int c) {
+      DerivativeRow row;
+      std::array<double, dim> alongNormal{};
+      for (int m = 0; m < dim; ++m) alongNormal[m] = f.dForce[c][m];
+      addNormalDerivative(row, normal, alongNormal);
+      for (int m = 0; m < dim; ++m) addScaled(row, dw[m], f.dForce[c][dim + m]);
+      addScaled(row, entry.dD, f.dForce[c][2 * dim]);
+      addScaled(row, entry.dGap, f.dForce[c][2 * dim + 1]);
+      return row;
+    };
+    auto& out = sink.out;
+    for (int c = 0; c < dim; ++c) {
+      const DerivativeRow df = derivative(c);
+      if (!n.prescribed[c]) {
+        out.contactResidual.push_back({sink.row(n.node, c), -f.force[c]});
+        sink.add(out.contactStiffness, sink.row(n.node, c), df, -1.0);
+      } else {
+        out.prescribedForce.push_back({sink.row(n.node, c), f.force[c]});
+      }
+      for (const auto& [master, Mjl] : entry.M) {
+        const GlobalOrdinal target = sink.row(master, c);
+        if (sink.prescribed(master, c)) {
+          out.prescribedForce.push_back({target, -Mjl / D * f.force[c]});
+          continue;
+        }
+        out.contactResidual.push_back({target, Mjl / D * f.force[c]});
+        DerivativeRow row = df;
+        for (auto& [key, value] : row) value *= Mjl / D;
+        const auto dM = entry.dM.find(master);
+        if (dM != entry.dM.end()) addScaled(row, dM->second, f.force[c] / D);
+        addScaled(row, entry.dD, -Mjl * f.force[c] / (D * D));
+        sink.add(out.contactStiffness, target, row);
+      }
+    }
+  }
+
+private:
+  PenaltyFrictionalInput<dim> input(const SlaveNode& n, const NodalMortarEntry& entry,
+                                    const NodalNormal& normal) const {
+    PenaltyFrictionalInput<dim> in;
+    in.normal = first<dim>(normal.n);
+    in.slip = first<dim>(n.slip);
+    in.oldTraction = first<dim>(n.stepStart->traction);
+    in.D = entry.D;
+    in.gap = entry.gap;
+    return in;
+  }
+  FrictionalParameters parameters(const SlaveNode& n) const {
+    FrictionalParameters p = p_;
+    p.law.coefficient = n.frictionCoefficient;
+    p.epsN = n.epsN;
+    p.epsTau = c_.settings->tangentFactor * n.epsN;
+    return p;
+  }
+
+  PairConstants c_;
+  FrictionalParameters p_;
+};
+
+}  // namespace
+
+template <int dim>
+std::unique_ptr<Formulation> makePenaltyFrictional(const PairConstants& constants) {
+  return std::make_unique<PenaltyFrictional<dim>>(constants);
+}
+template std::unique_ptr<Formulation> makePenaltyFrictional<2>(const PairConstants&);
+template std::unique_ptr<Formulation> makePenaltyFrictional<3>(const PairConstants&);
+
+}  // namespace coulomb::contact

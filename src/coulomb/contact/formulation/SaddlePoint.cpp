@@ -1,0 +1,150 @@
+/// @file SaddlePoint.cpp
+/// @brief Frictionless ALM with the dual multipliers kept as Newton unknowns
+/// (MultiplierBlock in ContactContributions.hpp), deck `Contact/System Form`
+/// = Saddle Point. The condensed form (AlmFrictionless.cpp) is the
+/// production path; this one exists to check it: the same mortar values and
+/// derivatives, the nodal law of NodalContactLaw (4.72b, components form,
+/// vector multiplier) instead of the condensation. Per node the unknown is
+/// z_j = (k / eps_n,j) lambda_j (a length) and the rows are
+/// R_j = (eps_n,j t / k) r_lambda,j.
+#include "coulomb/contact/CondensationFrame.hpp"
+#include "coulomb/contact/NodalContactLaw.hpp"
+#include "coulomb/contact/formulation/Formulations.hpp"
+
+namespace coulomb::contact {
+
+namespace {
+
+template <int dim>
+class SaddlePoint final : public Formulation {
+public:
+  explicit SaddlePoint(const PairConstants& c) : c_(c) {}
+
+  bool needsMultipliers() const override { return true; }
+
+  ContactState decide(const SlaveNode& n, ContactState previous, bool updateSet,
+                      PairIterationSummary& summary) const override {
+    // A node whose free components cannot carry its normal multiplier stays
+    // open (CondensationFrame::usable), as in the condensed form.
+    if (!usable(n)) {
+      n.state->lambdaN = n.state->pressure = 0.0;
+      return ContactState::Inactive;
+    }
+    const auto lambda = multiplier(n);
+    double lambdaN = 0;
+    for (int c = 0; c < dim; ++c) lambdaN += lambda[c] * n.normal->n[c];
+    const ContactState state =
+        nextState(almContactState(lambdaN, n.mortar->gap, n.mortar->D, c_.k, n.epsN, c_.touchingGap()), previous,
+                  updateSet, summary.violations);
+    n.state->lambdaN = isActive(state) ? lambdaN : 0.0;
+    n.state->pressure = -c_.k * n.state->lambdaN;
+    return state;
+  }
+
+  /// The rows or forces depend on the geometry at active nodes (gap) and at
+  /// open ones still carrying a multiplier (n, D).
+  bool needsDerivatives(const SlaveNode& n) const override {
+    if (!usable(n)) return false;
+    const auto& z = n.multiplier;
+    return isActive(n.state->state) || z[0] != 0.0 || z[1] != 0.0 || z[2] != 0.0;
+  }
+
+  void emit(const SlaveNode& n, RowSink& sink, PairIterationSummary& summary) const override {
+    auto& out = sink.out.multipliers;
+    const double t = c_.thickness;
+    if (!usable(n)) {
+      // No master in reach (or not usable): the multiplier vanishes, R = t eps_n h^(dim-1) z.
+      const double scale = t * n.epsN * c_.referenceD;
+      for (int c = 0; c < dim; ++c) {
+        out.rows.push_back({sink.multiplierDof(n.slave, c), sink.multiplierDof(n.slave, c), scale});
+        out.residual.push_back({sink.multiplierDof(n.slave, c), scale * n.multiplier[c]});
+      }
+      return;
+    }
+    const bool withDerivatives = n.mortarDerivative != nullptr;
+    const NodalMortarEntry& entry = withDerivatives ? *n.mortarDerivative : *n.mortar;
+    const NodalNormal& normal = withDerivatives ? *n.normalDerivative : *n.normal;
+    const double D = entry.D;
+    const double toLambda = n.epsN / c_.k, rowScale = n.epsN * t / c_.k;
+    const auto lambda = multiplier(n);
+    AlmNodeInput<dim> in;
+    in.lambda = lambda;
+    in.normal = first<dim>(normal.n);
+    in.gap = entry.gap;
+    in.D = D;
+    const auto law = almResidual<dim>(in, AlmParameters{c_.k, n.epsN, n.epsN}, n.state->state);
+
+    // The multiplier rows: R, dR/dz, dR/du (through g~, n, D).
+    for (int a = 0; a < dim; ++a) {
+      const GlobalOrdinal target = sink.multiplierDof(n.slave, a);
+      out.residual.push_back({target, rowScale * law.r[a]});
+      for (int c = 0; c < dim; ++c)
+        out.rows.push_back({target, sink.multiplierDof(n.slave, c), rowScale * toLambda * law.dLambda[a][c]});
+      if (!withDerivatives) continue;
+      sink.add(out.rows, target, entry.dGap, rowScale * law.dGap[a]);
+      sink.add(out.rows, target, entry.dD, rowScale * law.dD[a]);
+      for (const auto& d : normal.derivative) {
+        double value = 0;
+        for (int c = 0; c < dim; ++c) value += law.dNormal[a][c] * d.dn[c];
+        if (value != 0.0 && !sink.prescribed(d.node, d.component))
+          out.rows.push_back({target, sink.row(d.node, d.component), rowScale * value});
+      }
+    }
+    if (isActive(n.state->state))
+      summary.normalResidual2 += (n.epsN * t * entry.gap) * (n.epsN * t * entry.gap);
+
+    // Forces on the bodies (NodalContactLaw): slave k t D lambda, master
+    // -k t M_jl lambda; the displacement rows carry r - f_c, the columns
+    // C = -df/dz, and K_c = -df/du through D and M (lambda is an unknown).
+    auto& contributions = sink.out;
+    const double kt = c_.k * t;
+    for (int c = 0; c < dim; ++c) {
+      const double force = kt * D * lambda[c];
+      if (isActive(n.state->state)) {
+        summary.slaveForce[c] += force;
+        summary.normalForce[c] += force;
+        summary.contactForce2 += force * force;
+      }
+      const GlobalOrdinal z = sink.multiplierDof(n.slave, c);
+      if (!n.prescribed[c]) {
+        const GlobalOrdinal row = sink.row(n.node, c);
+        contributions.contactResidual.push_back({row, -force});
+        out.columns.push_back({row, z, -kt * D * toLambda});
+        if (withDerivatives) sink.add(contributions.contactStiffness, row, entry.dD, -kt * lambda[c]);
+      }
+      for (const auto& [master, Mjl] : entry.M) {
+        if (sink.prescribed(master, c)) continue;
+        const GlobalOrdinal row = sink.row(master, c);
+        contributions.contactResidual.push_back({row, kt * Mjl * lambda[c]});
+        out.columns.push_back({row, z, kt * Mjl * toLambda});
+        if (!withDerivatives) continue;
+        const auto dM = entry.dM.find(master);
+        if (dM != entry.dM.end()) sink.add(contributions.contactStiffness, row, dM->second, kt * lambda[c]);
+      }
+    }
+  }
+
+private:
+  bool usable(const SlaveNode& n) const {
+    return n.mortar != nullptr && condensationFrame<dim>(first<dim>(n.normal->n), first<dim>(n.prescribed)).usable;
+  }
+  /// lambda_j = (eps_n / k) z_j.
+  std::array<double, dim> multiplier(const SlaveNode& n) const {
+    std::array<double, dim> lambda{};
+    for (int c = 0; c < dim; ++c) lambda[c] = n.epsN / c_.k * n.multiplier[c];
+    return lambda;
+  }
+
+  PairConstants c_;
+};
+
+}  // namespace
+
+template <int dim>
+std::unique_ptr<Formulation> makeSaddlePoint(const PairConstants& constants) {
+  return std::make_unique<SaddlePoint<dim>>(constants);
+}
+template std::unique_ptr<Formulation> makeSaddlePoint<2>(const PairConstants&);
+template std::unique_ptr<Formulation> makeSaddlePoint<3>(const PairConstants&);
+
+}  // namespace coulomb::contact
