@@ -5,10 +5,12 @@
 
 The layers and what each may include (docs/architecture.md, "Layers"):
 a file of src/coulomb/<layer>/ may include "coulomb/<other>/..." only for
-<other> in ALLOWED[<layer>]. Inside the contact wing, the formulations
-(contact/formulation/) see the kernels and the contributions but not the
-pair or the model that drive them, and the kernels and mortar files do not
-see the formulations.
+<other> in ALLOWED[<layer>]. Inside the contact wing the same holds for
+its folders (CONTACT_ALLOWED): mortar/ (dual basis, segments, clipping) and
+laws/ (nodal kernels, active-set rules, friction laws) stand alone,
+interface/ (interface, search, normals, the mortar pass) builds on mortar/,
+formulation/ on laws/, interface/ and the shared headers of contact/
+(settings, contributions), and contact/ itself (the pair, the model) on all.
 """
 import os
 import re
@@ -23,9 +25,26 @@ ALLOWED = {
     "contact": {"core", "mesh", "io", "linalg", "fem", "contact"},
     "solver": {"core", "mesh", "io", "linalg", "fem", "contact", "solver"},
 }
-# contact/ files that drive the formulations (may include contact/formulation/).
-CONTACT_DRIVERS = re.compile(r"^contact/(ContactPair|ContactModel)[A-Za-z]*\.(hpp|cpp)$")
-FORMULATION_MAY_NOT = re.compile(r"^contact/(ContactPair|ContactModel)[A-Za-z]*\.hpp$")
+# The contact wing's folders; "base" is contact/ itself. The shared headers
+# of contact/ (SHARED) may be included by the formulations.
+CONTACT_ALLOWED = {
+    "mortar": {"mortar"},
+    "laws": {"laws"},
+    "interface": {"interface", "mortar"},
+    "formulation": {"formulation", "laws", "interface", "mortar", "shared"},
+    "base": {"base", "shared", "formulation", "laws", "interface", "mortar"},
+}
+SHARED = {"ContactSettings.hpp", "ContactContributions.hpp"}
+
+
+def contact_part(path):
+    """'mortar', 'laws', ... for a path under contact/ ('shared' for SHARED)."""
+    parts = path.split("/")
+    if len(parts) == 2:
+        return "shared" if parts[1] in SHARED else "base"
+    return parts[1]
+
+
 INCLUDE = re.compile(r'^\s*#\s*include\s+"coulomb/([^"]+)"')
 
 
@@ -51,11 +70,12 @@ def violations(root):
                         found.append(f"{where}: '{layer}' is no known layer (add it to {__file__})")
                     elif other not in ALLOWED[layer]:
                         found.append(f"{where}: '{layer}' may not include '{other}'")
-                    elif rel.startswith("contact/formulation/") and FORMULATION_MAY_NOT.match(target):
-                        found.append(f"{where}: a formulation may not include the pair or the model that drive it")
-                    elif (layer == "contact" and not rel.startswith("contact/formulation/")
-                          and target.startswith("contact/formulation/") and not CONTACT_DRIVERS.match(rel)):
-                        found.append(f"{where}: only the pair and the model include the formulations")
+                    elif layer == "contact" and other == "contact":
+                        mine = contact_part(rel)
+                        mine = "base" if mine == "shared" and not rel.endswith(".hpp") else mine
+                        allowed = CONTACT_ALLOWED["laws" if mine == "shared" else mine]
+                        if contact_part(target) not in allowed:
+                            found.append(f"{where}: contact/{mine} may not include contact/{contact_part(target)}")
     return found
 
 

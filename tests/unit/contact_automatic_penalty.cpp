@@ -1,7 +1,7 @@
 // The automatic nodal penalty eps_n,j = factor × E_j / h_j (AutomaticPenalty.hpp).
 #include <gtest/gtest.h>
 
-#include "coulomb/contact/AutomaticPenalty.hpp"
+#include "coulomb/contact/laws/AutomaticPenalty.hpp"
 #include "coulomb/core/Error.hpp"
 
 namespace coulomb::contact {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "coulomb/contact/DualBasis.hpp"
+#include "coulomb/contact/mortar/DualBasis.hpp"
 #include "coulomb/core/Error.hpp"
 
 namespace coulomb::contact {

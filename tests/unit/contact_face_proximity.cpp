@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "coulomb/contact/FaceProximity.hpp"
+#include "coulomb/contact/interface/FaceProximity.hpp"
 
 namespace coulomb::contact {
 namespace {

@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "coulomb/contact/ContactModel.hpp"
-#include "coulomb/contact/FrictionalNode.hpp"
+#include "coulomb/contact/laws/FrictionalNode.hpp"
 #include "coulomb/core/Error.hpp"
 
 using namespace coulomb::contact;

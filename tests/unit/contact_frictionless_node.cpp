@@ -9,7 +9,7 @@
 
 #include <array>
 
-#include "coulomb/contact/FrictionlessNode.hpp"
+#include "coulomb/contact/laws/FrictionlessNode.hpp"
 #include "coulomb/core/Error.hpp"
 
 namespace coulomb::contact {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "coulomb/contact/MortarSegment2D.hpp"
+#include "coulomb/contact/mortar/MortarSegment2D.hpp"
 
 namespace coulomb::contact {
 namespace {

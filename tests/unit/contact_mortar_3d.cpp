@@ -7,7 +7,7 @@
 #include <random>
 #include <vector>
 
-#include "coulomb/contact/MortarSegment3D.hpp"
+#include "coulomb/contact/mortar/MortarSegment3D.hpp"
 #include "coulomb/core/Error.hpp"
 
 namespace coulomb::contact {

@@ -9,8 +9,8 @@
 #include <sstream>
 #include <vector>
 
-#include "coulomb/contact/ActiveSet.hpp"
-#include "coulomb/contact/NodalContactLaw.hpp"
+#include "coulomb/contact/laws/ActiveSet.hpp"
+#include "coulomb/contact/laws/NodalContactLaw.hpp"
 #include "coulomb/core/Error.hpp"
 
 namespace coulomb::contact {

@@ -8,7 +8,7 @@
 #include <map>
 #include <vector>
 
-#include "coulomb/contact/NodalNormals.hpp"
+#include "coulomb/contact/interface/NodalNormals.hpp"
 #include "coulomb/core/Error.hpp"
 
 namespace coulomb::contact {

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <initializer_list>
 
-#include "coulomb/contact/PolygonClipping.hpp"
+#include "coulomb/contact/mortar/PolygonClipping.hpp"
 
 namespace coulomb::contact {
 namespace {

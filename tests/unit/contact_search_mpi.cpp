@@ -14,9 +14,9 @@
 
 #include "TestSupport.hpp"
 #include "TwoBodies.hpp"
-#include "coulomb/contact/ContactInterface.hpp"
-#include "coulomb/contact/ContactSearch.hpp"
-#include "coulomb/contact/NodalNormals.hpp"
+#include "coulomb/contact/interface/ContactInterface.hpp"
+#include "coulomb/contact/interface/ContactSearch.hpp"
+#include "coulomb/contact/interface/NodalNormals.hpp"
 #include "coulomb/core/Error.hpp"
 #include "coulomb/fem/DofMap.hpp"
 #include "coulomb/io/ExodusReader.hpp"

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "coulomb/contact/ActiveSet.hpp"
+#include "coulomb/contact/laws/ActiveSet.hpp"
 #include "coulomb/linalg/TripletAssembly.hpp"
 
 namespace coulomb::contact {

@@ -10,7 +10,7 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "coulomb/contact/AutomaticPenalty.hpp"
+#include "coulomb/contact/laws/AutomaticPenalty.hpp"
 #include "coulomb/core/Error.hpp"
 #include "coulomb/core/Parallel.hpp"
 

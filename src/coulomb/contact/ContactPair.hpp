@@ -27,12 +27,12 @@
 #include <string>
 #include <vector>
 
-#include "coulomb/contact/ActiveSet.hpp"
+#include "coulomb/contact/laws/ActiveSet.hpp"
 #include "coulomb/contact/ContactContributions.hpp"
-#include "coulomb/contact/ContactInterface.hpp"
-#include "coulomb/contact/ContactSearch.hpp"
+#include "coulomb/contact/interface/ContactInterface.hpp"
+#include "coulomb/contact/interface/ContactSearch.hpp"
 #include "coulomb/contact/ContactSettings.hpp"
-#include "coulomb/contact/MortarPass.hpp"
+#include "coulomb/contact/interface/MortarPass.hpp"
 #include "coulomb/contact/formulation/Formulation.hpp"
 #include "coulomb/core/TpetraTypes.hpp"
 #include "coulomb/fem/ModelSettings.hpp"

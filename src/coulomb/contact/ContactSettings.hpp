@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "coulomb/contact/FrictionLaw.hpp"
+#include "coulomb/contact/laws/FrictionLaw.hpp"
 
 namespace Teuchos {
 class ParameterList;

@@ -9,6 +9,7 @@
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "coulomb/core/Error.hpp"
+#include "coulomb/io/Choices.hpp"
 #include "coulomb/io/ParameterValidation.hpp"
 #include "coulomb/io/RangeValidator.hpp"
 
@@ -20,6 +21,12 @@ using Teuchos::RCP;
 using Teuchos::rcp;
 
 namespace {
+
+// The deck's enumerations of the model, each declared once (io::Choices).
+const io::Choices<MaterialModel> kMaterialModels{{"Linear Elastic", MaterialModel::LinearElastic},
+                                                 {"Neo-Hookean", MaterialModel::NeoHookean}};
+const io::Choices<PlaneAssumption> kPlaneAssumptions{{"Plane Strain", PlaneAssumption::PlaneStrain},
+                                                     {"Plane Stress", PlaneAssumption::PlaneStress}};
 
 const char* const kFunctionDoc =
     "name of a sublist of 'Functions', or 'ramp' (f = t) or 'constant' (f = 1)";
@@ -50,8 +57,9 @@ std::array<double, 3> vectorOfDimension(const Array<double>& a, int dimension, c
 void addValidModelParameters(ParameterList& valid) {
   ParameterList& materials = valid.sublist("Materials", false, "One sublist per material, named freely");
   ParameterList& material = materials.sublist("*", false, "a material");
-  material.set("Model", "Linear Elastic", "small-strain linear elasticity, or compressible Neo-Hookean (total Lagrangian)",
-               io::oneOf({"Linear Elastic", "Neo-Hookean"}));
+  material.set("Model", std::string(kMaterialModels.name(MaterialModel::LinearElastic)),
+               "small-strain linear elasticity, or compressible Neo-Hookean (total Lagrangian)",
+               kMaterialModels.validator());
   material.set("Young's Modulus", 1.0, std::string(io::kRequired) + "E [force/area]", io::positive());
   material.set("Poisson's Ratio", 0.0, std::string(io::kRequired) + "nu", rcp(new io::RangeValidator(-1.0, true, 0.5, true)));
 
@@ -61,8 +69,8 @@ void addValidModelParameters(ParameterList& valid) {
   block.set("Thickness", 1.0, "out-of-plane thickness of 2D blocks [length]", io::positive());
 
   ParameterList& problem = valid.sublist("Problem", false, "Modelling assumptions");
-  problem.set("Plane Assumption", "Plane Strain", "2D meshes: plane strain or plane stress",
-              io::oneOf({"Plane Strain", "Plane Stress"}));
+  problem.set("Plane Assumption", std::string(kPlaneAssumptions.name(PlaneAssumption::PlaneStrain)),
+              "2D meshes: plane strain or plane stress", kPlaneAssumptions.validator());
 
   ParameterList& functions = valid.sublist("Functions", false, "Piecewise-linear functions of pseudo time, named freely");
   ParameterList& function = functions.sublist("*", false, "a function");
@@ -103,7 +111,8 @@ ModelSettings parseModelSettings(const ParameterList& deck, int dimension) {
   ModelSettings model;
   const ParameterList empty;
   const ParameterList& problem = deck.isSublist("Problem") ? deck.sublist("Problem") : empty;
-  const std::string plane = io::valueOrDefault<std::string>(problem, valid.sublist("Problem"), "Plane Assumption");
+  const PlaneAssumption plane =
+      kPlaneAssumptions.value(io::valueOrDefault<std::string>(problem, valid.sublist("Problem"), "Plane Assumption"));
 
   const ParameterList& materials = deck.isSublist("Materials") ? deck.sublist("Materials") : empty;
   const ParameterList& validMaterial = valid.sublist("Materials").sublist("*");
@@ -118,11 +127,10 @@ ModelSettings parseModelSettings(const ParameterList& deck, int dimension) {
     const ParameterList& m = materials.sublist(materialName);
     const std::string where = "Materials/" + materialName;
     MaterialParameters p;
-    const std::string modelName = io::valueOrDefault<std::string>(m, validMaterial, "Model");
-    p.model = modelName == "Neo-Hookean" ? MaterialModel::NeoHookean : MaterialModel::LinearElastic;
+    p.model = kMaterialModels.value(io::valueOrDefault<std::string>(m, validMaterial, "Model"));
     p.youngsModulus = m.get<double>("Young's Modulus");
     p.poissonRatio = m.get<double>("Poisson's Ratio");
-    p.plane = plane == "Plane Stress" ? PlaneAssumption::PlaneStress : PlaneAssumption::PlaneStrain;
+    p.plane = plane;
     COULOMB_REQUIRE(!(dimension == 2 && p.plane == PlaneAssumption::PlaneStress && p.model == MaterialModel::NeoHookean),
                     "deck: '" << where << "' is Neo-Hookean, which supports only 'Problem/Plane Assumption' = 'Plane Strain'");
     p.thickness = io::valueOrDefault<double>(block, validBlock, "Thickness");

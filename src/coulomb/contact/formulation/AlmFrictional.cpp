@@ -8,7 +8,7 @@
 /// (ContactContributions::prescribedForce): the supports carry them.
 #include <cmath>
 
-#include "coulomb/contact/FrictionalNode.hpp"
+#include "coulomb/contact/laws/FrictionalNode.hpp"
 #include "coulomb/contact/formulation/Formulations.hpp"
 
 namespace coulomb::contact {

@@ -5,7 +5,7 @@
 /// M_jl n / (D |n_F|) × the a-row, K_c = -d f_c / dx with lambda_n frozen.
 /// ALM and MPC share the rows (the MPC's ties) and differ in the state rule
 /// (FrictionlessNode.hpp).
-#include "coulomb/contact/FrictionlessNode.hpp"
+#include "coulomb/contact/laws/FrictionlessNode.hpp"
 #include "coulomb/contact/formulation/Formulations.hpp"
 
 namespace coulomb::contact {

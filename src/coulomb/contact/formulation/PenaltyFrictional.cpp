@@ -2,7 +2,7 @@
 /// @brief Penalty with friction (4.71a with a return map, FrictionalNode.hpp):
 /// the force f of the node's traction on the slave (residual -f,
 /// K_c = -df/dx through n, w, D, g~) and -(M_jl / D) f on the masters.
-#include "coulomb/contact/FrictionalNode.hpp"
+#include "coulomb/contact/laws/FrictionalNode.hpp"
 #include "coulomb/contact/formulation/Formulations.hpp"
 
 namespace coulomb::contact {

@@ -4,7 +4,7 @@
 /// rows (residual -f), K_c = -df/dx through g~, n, D and M.
 #include <algorithm>
 
-#include "coulomb/contact/NodalContactLaw.hpp"
+#include "coulomb/contact/laws/NodalContactLaw.hpp"
 #include "coulomb/contact/formulation/Formulations.hpp"
 
 namespace coulomb::contact {

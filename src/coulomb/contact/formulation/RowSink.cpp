@@ -1,6 +1,6 @@
 #include "coulomb/contact/formulation/RowSink.hpp"
 
-#include "coulomb/contact/ContactInterface.hpp"
+#include "coulomb/contact/interface/ContactInterface.hpp"
 
 namespace coulomb::contact {
 

@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "coulomb/contact/ContactContributions.hpp"
-#include "coulomb/contact/MortarPass.hpp"
-#include "coulomb/contact/NodalNormals.hpp"
+#include "coulomb/contact/interface/MortarPass.hpp"
+#include "coulomb/contact/interface/NodalNormals.hpp"
 
 namespace coulomb::contact {
 

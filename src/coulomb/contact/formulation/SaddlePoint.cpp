@@ -7,8 +7,8 @@
 /// vector multiplier) instead of the condensation. Per node the unknown is
 /// z_j = (k / eps_n,j) lambda_j (a length) and the rows are
 /// R_j = (eps_n,j t / k) r_lambda,j.
-#include "coulomb/contact/CondensationFrame.hpp"
-#include "coulomb/contact/NodalContactLaw.hpp"
+#include "coulomb/contact/laws/CondensationFrame.hpp"
+#include "coulomb/contact/laws/NodalContactLaw.hpp"
 #include "coulomb/contact/formulation/Formulations.hpp"
 
 namespace coulomb::contact {

@@ -6,9 +6,9 @@
 #include <array>
 #include <cstddef>
 
-#include "coulomb/contact/ActiveSet.hpp"
-#include "coulomb/contact/MortarPass.hpp"
-#include "coulomb/contact/NodalNormals.hpp"
+#include "coulomb/contact/laws/ActiveSet.hpp"
+#include "coulomb/contact/interface/MortarPass.hpp"
+#include "coulomb/contact/interface/NodalNormals.hpp"
 
 namespace coulomb::contact {
 

@@ -33,9 +33,9 @@
 #include <utility>
 #include <vector>
 
-#include "coulomb/contact/ContactInterface.hpp"
-#include "coulomb/contact/ContactSearch.hpp"
-#include "coulomb/contact/NodalNormals.hpp"
+#include "coulomb/contact/interface/ContactInterface.hpp"
+#include "coulomb/contact/interface/ContactSearch.hpp"
+#include "coulomb/contact/interface/NodalNormals.hpp"
 
 namespace coulomb::contact {
 

@@ -6,8 +6,8 @@
 /// Includes Sacado: for .cpp files only.
 #include <Sacado.hpp>
 
-#include "coulomb/contact/MortarSegment2D.hpp"
-#include "coulomb/contact/MortarSegment3D.hpp"
+#include "coulomb/contact/mortar/MortarSegment2D.hpp"
+#include "coulomb/contact/mortar/MortarSegment3D.hpp"
 
 namespace coulomb::contact {
 

@@ -53,7 +53,7 @@
 /// 36 Quad4/Quad4); only the double ones are declared `extern` here.
 #include <array>
 
-#include "coulomb/contact/DualBasis.hpp"
+#include "coulomb/contact/mortar/DualBasis.hpp"
 
 namespace coulomb::contact {
 

@@ -1,13 +1,13 @@
 /// @file MortarSegment3D.cpp
 /// @brief Auxiliary-plane mortar integration of a 3D face pair (equations in the header).
-#include "coulomb/contact/MortarSegment3D.hpp"
+#include "coulomb/contact/mortar/MortarSegment3D.hpp"
 
-#include "coulomb/contact/MortarScalarTypes.hpp"
+#include "coulomb/contact/mortar/MortarScalarTypes.hpp"
 
 #include <cmath>
 #include <type_traits>
 
-#include "coulomb/contact/PolygonClipping.hpp"
+#include "coulomb/contact/mortar/PolygonClipping.hpp"
 #include "coulomb/core/Error.hpp"
 
 namespace coulomb::contact {

@@ -1,8 +1,8 @@
 /// @file PolygonClipping.cpp
 /// @brief Sutherland–Hodgman clipping of convex polygons, generic in the scalar.
-#include "coulomb/contact/PolygonClipping.hpp"
+#include "coulomb/contact/mortar/PolygonClipping.hpp"
 
-#include "coulomb/contact/MortarScalarTypes.hpp"
+#include "coulomb/contact/mortar/MortarScalarTypes.hpp"
 
 #include <cmath>
 #include <utility>

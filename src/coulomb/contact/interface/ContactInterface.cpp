@@ -1,7 +1,7 @@
 /// @file ContactInterface.cpp
 /// @brief Faces and nodes of a slave/master side-set pair; gather of their
 /// current coordinates (see the header).
-#include "coulomb/contact/ContactInterface.hpp"
+#include "coulomb/contact/interface/ContactInterface.hpp"
 
 #include <algorithm>
 #include <set>

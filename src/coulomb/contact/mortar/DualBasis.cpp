@@ -1,8 +1,8 @@
 /// @file DualBasis.cpp
 /// @brief Element mass matrices and dual-basis coefficients of slave faces.
-#include "coulomb/contact/DualBasis.hpp"
+#include "coulomb/contact/mortar/DualBasis.hpp"
 
-#include "coulomb/contact/MortarScalarTypes.hpp"
+#include "coulomb/contact/mortar/MortarScalarTypes.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -42,7 +42,7 @@
 /// Sacado::Fad::SFad<double, 12> in MortarSegment2D.cpp.
 #include <array>
 
-#include "coulomb/contact/DualBasis.hpp"
+#include "coulomb/contact/mortar/DualBasis.hpp"
 
 namespace coulomb::contact {
 

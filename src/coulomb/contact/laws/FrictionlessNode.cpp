@@ -1,4 +1,4 @@
-#include "coulomb/contact/FrictionlessNode.hpp"
+#include "coulomb/contact/laws/FrictionlessNode.hpp"
 
 #include "coulomb/core/Error.hpp"
 

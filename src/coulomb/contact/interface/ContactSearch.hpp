@@ -37,7 +37,7 @@
 
 #include <Teuchos_Comm.hpp>
 
-#include "coulomb/contact/ContactInterface.hpp"
+#include "coulomb/contact/interface/ContactInterface.hpp"
 
 namespace coulomb::contact {
 

@@ -1,6 +1,6 @@
 /// @file ActiveSet.cpp
 /// @brief Active-set update rule and summary (seed 4.73/4.74), see ActiveSet.hpp.
-#include "coulomb/contact/ActiveSet.hpp"
+#include "coulomb/contact/laws/ActiveSet.hpp"
 
 #include <ostream>
 

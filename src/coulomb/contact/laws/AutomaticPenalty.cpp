@@ -1,8 +1,8 @@
-#include "coulomb/contact/AutomaticPenalty.hpp"
+#include "coulomb/contact/laws/AutomaticPenalty.hpp"
 
 #include <algorithm>
 
-#include "coulomb/contact/NodalContactLaw.hpp"
+#include "coulomb/contact/laws/NodalContactLaw.hpp"
 #include "coulomb/core/Error.hpp"
 
 namespace coulomb::contact {

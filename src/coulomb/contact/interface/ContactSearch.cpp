@@ -1,6 +1,6 @@
 /// @file ContactSearch.cpp
 /// @brief Bounding-box R-tree search of candidate contact pairs (see the header).
-#include "coulomb/contact/ContactSearch.hpp"
+#include "coulomb/contact/interface/ContactSearch.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -15,7 +15,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
-#include "coulomb/contact/FaceProximity.hpp"
+#include "coulomb/contact/interface/FaceProximity.hpp"
 #include "coulomb/core/Error.hpp"
 
 namespace coulomb::contact {

@@ -2,13 +2,13 @@
 /// @brief The frictional node kernel (FrictionalNode.hpp): one generic
 /// function of the scalar type, evaluated with doubles for the decision and
 /// with Sacado forward AD for the rows and their derivatives.
-#include "coulomb/contact/FrictionalNode.hpp"
+#include "coulomb/contact/laws/FrictionalNode.hpp"
 
 #include <cmath>
 
 #include <Sacado.hpp>
 
-#include "coulomb/contact/CondensationFrame.hpp"
+#include "coulomb/contact/laws/CondensationFrame.hpp"
 #include "coulomb/core/Error.hpp"
 
 namespace coulomb::contact {

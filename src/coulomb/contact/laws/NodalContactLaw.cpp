@@ -1,7 +1,7 @@
 /// @file NodalContactLaw.cpp
 /// @brief Nodal frictionless ALM and penalty kernels (seed 4.71a, 4.72a/b,
 /// 4.74 with mu = 0); formulas in NodalContactLaw.hpp.
-#include "coulomb/contact/NodalContactLaw.hpp"
+#include "coulomb/contact/laws/NodalContactLaw.hpp"
 
 #include <algorithm>
 

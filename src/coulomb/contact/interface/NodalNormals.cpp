@@ -1,6 +1,6 @@
 /// @file NodalNormals.cpp
 /// @brief Averaged nodal normals and their Sacado derivatives (see the header).
-#include "coulomb/contact/NodalNormals.hpp"
+#include "coulomb/contact/interface/NodalNormals.hpp"
 
 #include <Sacado.hpp>
 #include <algorithm>

@@ -31,8 +31,8 @@
 #include <array>
 #include <vector>
 
-#include "coulomb/contact/ContactInterface.hpp"
-#include "coulomb/contact/DualBasis.hpp"
+#include "coulomb/contact/interface/ContactInterface.hpp"
+#include "coulomb/contact/mortar/DualBasis.hpp"
 
 namespace coulomb::contact {
 

@@ -1,4 +1,4 @@
-#include "coulomb/contact/FrictionLaw.hpp"
+#include "coulomb/contact/laws/FrictionLaw.hpp"
 
 namespace coulomb::contact {
 

@@ -14,15 +14,15 @@
 ///     is fixed for a given rank count.
 /// Packed entry: node, D, gap, #M, (l, M_jl)..., dD row, dGap row, #dM,
 /// (l, dM row)...; a row is #entries, (node, component, value)....
-#include "coulomb/contact/MortarPass.hpp"
+#include "coulomb/contact/interface/MortarPass.hpp"
 
 
 #include <Teuchos_CommHelpers.hpp>
 #include <algorithm>
 #include <ostream>
 
-#include "coulomb/contact/MortarSegment2D.hpp"
-#include "coulomb/contact/MortarSegment3D.hpp"
+#include "coulomb/contact/mortar/MortarSegment2D.hpp"
+#include "coulomb/contact/mortar/MortarSegment3D.hpp"
 #include "coulomb/core/Error.hpp"
 #include "coulomb/core/Parallel.hpp"
 

@@ -1,4 +1,4 @@
-#include "coulomb/contact/CondensationFrame.hpp"
+#include "coulomb/contact/laws/CondensationFrame.hpp"
 
 namespace coulomb::contact {
 

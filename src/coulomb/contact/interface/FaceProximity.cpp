@@ -1,6 +1,6 @@
 /// @file FaceProximity.cpp
 /// @brief Point-to-face distance, signed normal distance and footprint test (see the header).
-#include "coulomb/contact/FaceProximity.hpp"
+#include "coulomb/contact/interface/FaceProximity.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -11,8 +11,8 @@
 /// open. Fixed-size arrays, no Tpetra, no MPI.
 #include <array>
 
-#include "coulomb/contact/ActiveSet.hpp"
-#include "coulomb/contact/CondensationFrame.hpp"
+#include "coulomb/contact/laws/ActiveSet.hpp"
+#include "coulomb/contact/laws/CondensationFrame.hpp"
 
 namespace coulomb::contact {
 

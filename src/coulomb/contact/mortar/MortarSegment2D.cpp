@@ -1,8 +1,8 @@
 /// @file MortarSegment2D.cpp
 /// @brief Segment-based mortar integration of a Line2 pair (see the header for the equations).
-#include "coulomb/contact/MortarSegment2D.hpp"
+#include "coulomb/contact/mortar/MortarSegment2D.hpp"
 
-#include "coulomb/contact/MortarScalarTypes.hpp"
+#include "coulomb/contact/mortar/MortarScalarTypes.hpp"
 
 #include <cmath>
 #include <utility>

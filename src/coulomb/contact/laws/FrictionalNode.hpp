@@ -47,8 +47,8 @@
 /// Inputs of the derivatives, in this order: r (dim), n (dim), w (dim), D, g~.
 #include <array>
 
-#include "coulomb/contact/ActiveSet.hpp"
-#include "coulomb/contact/FrictionLaw.hpp"
+#include "coulomb/contact/laws/ActiveSet.hpp"
+#include "coulomb/contact/laws/FrictionLaw.hpp"
 
 namespace coulomb::contact {
 

@@ -57,7 +57,7 @@
 /// (n, D, M frozen). Continuous (zero) at g~ = 0; derivative jumps there.
 #include <array>
 
-#include "coulomb/contact/ActiveSet.hpp"
+#include "coulomb/contact/laws/ActiveSet.hpp"
 
 namespace coulomb::contact {
 
