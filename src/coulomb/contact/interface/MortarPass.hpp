@@ -84,10 +84,18 @@ std::ostream& operator<<(std::ostream& out, const NodalMortarQuantities& quantit
 /// computed, with derivatives when `withDerivatives`. Result: one entry per node
 /// of a slave face that has at least one contributing pair (partial sums: the
 /// contributions of this rank's faces only).
-/// `relativeTolerance`: passed to the segment kernels.
+/// `relativeTolerance`: passed to the segment kernels (merge, on-edge band
+/// and area tolerances, relative to the face). 1e-12: the objective slip
+/// multiplies a change of M_jl by a length, so a jump of M at the
+/// tolerance shows in the stick rows as eps_n t × tolerance × h. At 1e-10
+/// friction_r2 (scripts/bench friction --ref 2) stalled at t = 2 with three
+/// nodes' weighted slips flipping sign (±2.4e-13, D 1.6e-2) at every iterate,
+/// |f| 5.2e-7 against a target ~3e-7, through 5 cutbacks; at 1e-12 it
+/// converges quadratically (|f| 1.3e-11 in 2 iterations). The non-objective
+/// slip (dM times an increment) never saw the jump.
 NodalMortarQuantities integrateMortarPass(const ContactInterface& contact, const InterfaceConfiguration& x,
                                           const std::vector<NodalNormal>& normals, const SearchResult& pairs,
-                                          bool withDerivatives, double relativeTolerance = 1e-10);
+                                          bool withDerivatives, double relativeTolerance = 1e-12);
 
 /// @brief Collective: sums the partial quantities of all ranks on the owner of
 /// each slave node. Returns the entries of the owned slave nodes that received a

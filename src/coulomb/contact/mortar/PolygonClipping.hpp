@@ -60,8 +60,9 @@ template <typename T>
 void makeCounterClockwise(Polygon2<T>& polygon);
 
 /// @brief Width of the band outside a clip edge in which a vertex counts as on
-/// the edge, in units of the merge tolerance (the 3D kernels: 1e-10 of the
-/// face). Two failures bound it:
+/// the edge, in units of the merge tolerance (the 3D kernels: 1e-12 of the
+/// face since 2026-12-02, 1e-10 before; MortarPass.hpp says why). Two
+/// failures bounded it at 1e-10:
 ///  - on matching meshes slave and master edges coincide and Newton iterates
 ///    scatter about that configuration by ~1.5e-10 of the face. With the band
 ///    at 1 tolerance the scatter crossed the band's outer edge, where the
