@@ -27,6 +27,10 @@ const io::Choices<MaterialModel> kMaterialModels{{"Linear Elastic", MaterialMode
                                                  {"Neo-Hookean", MaterialModel::NeoHookean}};
 const io::Choices<PlaneAssumption> kPlaneAssumptions{{"Plane Strain", PlaneAssumption::PlaneStrain},
                                                      {"Plane Stress", PlaneAssumption::PlaneStress}};
+/// A Dirichlet condition's component; -1: all of them.
+const io::Choices<int> kComponents{{"x", 0}, {"y", 1}, {"z", 2}, {"all", -1}};
+const io::Choices<NeumannCondition::Kind> kLoadTypes{{"Pressure", NeumannCondition::Kind::Pressure},
+                                                     {"Traction", NeumannCondition::Kind::Traction}};
 
 const char* const kFunctionDoc =
     "name of a sublist of 'Functions', or 'ramp' (f = t) or 'constant' (f = 1)";
@@ -80,7 +84,7 @@ void addValidModelParameters(ParameterList& valid) {
   ParameterList& dirichlet = valid.sublist("Dirichlet Conditions", false, "Prescribed displacements, named freely");
   ParameterList& d = dirichlet.sublist("*", false, "u_c = (Value + Linear Coefficients . X) f(t) on a node set");
   d.set("Node Set", "", std::string(io::kRequired) + "node set name (or nodeset_<id>)");
-  d.set("Component", "all", "displaced component", io::oneOf({"x", "y", "z", "all"}));
+  d.set("Component", std::string(kComponents.name(-1)), "displaced component", kComponents.validator());
   d.set("Value", 0.0, "constant part of the prescribed displacement [length]");
   d.set("Linear Coefficients", Array<double>(), "optional gradient: adds c . X (one entry per dimension)");
   d.set("Function", "ramp", kFunctionDoc);
@@ -93,7 +97,7 @@ void addValidModelParameters(ParameterList& valid) {
   ParameterList& neumann = valid.sublist("Neumann Conditions", false, "Surface loads on side sets, named freely");
   ParameterList& n = neumann.sublist("*", false, "a dead load on the reference surface");
   n.set("Side Set", "", std::string(io::kRequired) + "side set name (or sideset_<id>)");
-  n.set("Type", "Pressure", "Pressure (> 0 pushes into the body) or Traction (vector)", io::oneOf({"Pressure", "Traction"}));
+  n.set("Type", "Pressure", "Pressure (> 0 pushes into the body) or Traction (vector)", kLoadTypes.validator());
   n.set("Value", 0.0, "pressure [force/area] (Type = Pressure)");
   n.set("Traction", Array<double>(), "traction vector [force/area] (Type = Traction)");
   n.set("Function", "ramp", kFunctionDoc);
@@ -146,13 +150,12 @@ ModelSettings parseModelSettings(const ParameterList& deck, int dimension) {
     DirichletCondition c;
     c.name = name;
     c.nodeSet = d.get<std::string>("Node Set");
-    const std::string component = io::valueOrDefault<std::string>(d, validD, "Component");
-    if (component == "all") {
+    const int component = kComponents.value(io::valueOrDefault<std::string>(d, validD, "Component"));
+    if (component < 0) {
       for (int i = 0; i < dimension; ++i) c.components.push_back(i);
     } else {
-      const int index = component == "x" ? 0 : component == "y" ? 1 : 2;
-      COULOMB_REQUIRE(index < dimension, "deck: '" << where << "/Component' is 'z' but the mesh is 2D");
-      c.components.push_back(index);
+      COULOMB_REQUIRE(component < dimension, "deck: '" << where << "/Component' is 'z' but the mesh is 2D");
+      c.components.push_back(component);
     }
     c.value = io::valueOrDefault<double>(d, validD, "Value");
     if (d.isParameter("Linear Coefficients")) {
@@ -163,7 +166,7 @@ ModelSettings parseModelSettings(const ParameterList& deck, int dimension) {
     c.function = lookupFunction(deck, io::valueOrDefault<std::string>(d, validD, "Function"), where);
     c.rotationAngle = io::valueOrDefault<double>(d, validD, "Rotation Angle");
     if (c.rotationAngle != 0.0) {
-      COULOMB_REQUIRE(component == "all", "deck: '" << where << "/Rotation Angle' needs 'Component' = 'all'");
+      COULOMB_REQUIRE(component < 0, "deck: '" << where << "/Rotation Angle' needs 'Component' = 'all'");
       COULOMB_REQUIRE(!d.isParameter("Value") && !d.isParameter("Linear Coefficients"),
                       "deck: '" << where << "/Rotation Angle' rotates the displacements of the conditions before it: "
                                 << "give no 'Value' or 'Linear Coefficients' with it");
@@ -191,8 +194,8 @@ ModelSettings parseModelSettings(const ParameterList& deck, int dimension) {
     NeumannCondition c;
     c.name = name;
     c.sideSet = n.get<std::string>("Side Set");
-    const bool isPressure = io::valueOrDefault<std::string>(n, validN, "Type") == "Pressure";
-    c.kind = isPressure ? NeumannCondition::Kind::Pressure : NeumannCondition::Kind::Traction;
+    c.kind = kLoadTypes.value(io::valueOrDefault<std::string>(n, validN, "Type"));
+    const bool isPressure = c.kind == NeumannCondition::Kind::Pressure;
     if (isPressure) {
       COULOMB_REQUIRE(!n.isParameter("Traction"), "deck: '" << where << "' is a Pressure but gives 'Traction'");
       c.pressure = io::valueOrDefault<double>(n, validN, "Value");

@@ -39,9 +39,6 @@ inline Teuchos::RCP<RangeValidator> positive() {
 inline Teuchos::RCP<RangeValidator> nonNegative() {
   return Teuchos::rcp(new RangeValidator(0.0, false, std::numeric_limits<double>::infinity(), true));
 }
-/// An enumeration of allowed strings.
-inline Teuchos::RCP<Teuchos::StringValidator> oneOf(std::initializer_list<std::string> names) {
-  return Teuchos::rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names.begin(), names.end())));
-}
+// Enumerations of names: io::Choices (Choices.hpp), declared once with their values.
 
 }  // namespace coulomb::io

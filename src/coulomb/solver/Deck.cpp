@@ -8,6 +8,7 @@
 #include "coulomb/contact/ContactSettings.hpp"
 #include "coulomb/core/Error.hpp"
 #include "coulomb/fem/ModelSettings.hpp"
+#include "coulomb/io/Choices.hpp"
 #include "coulomb/io/ParameterValidation.hpp"
 #include "coulomb/io/RangeValidator.hpp"
 
@@ -17,6 +18,10 @@ using Teuchos::ParameterList;
 using Teuchos::rcp;
 
 namespace {
+
+// The deck's choices of the run, each declared once (io::Choices).
+const io::Choices<bool> kPredictors{{"Extrapolate", true}, {"Previous", false}};  ///< true: extrapolate
+const io::Choices<bool> kLinearTolerances{{"Adaptive", true}, {"Fixed", false}};  ///< true: adaptive
 
 template <typename T>
 Teuchos::RCP<Teuchos::EnhancedNumberValidator<T>> range(T lo, T hi) {
@@ -46,7 +51,7 @@ Teuchos::RCP<const ParameterList> validDeckParameters() {
     stepping.set("Predictor", "Extrapolate",
                  "first Newton iterate of a step: Extrapolate (the last step's increment, scaled to this step) or "
                  "Previous (the last converged state); prescribed values are set in both",
-                 io::oneOf({"Extrapolate", "Previous"}));
+                 kPredictors.validator());
 
     ParameterList& newton = valid->sublist("Newton", false, "Newton convergence");
     const NewtonSettings defaults;
@@ -61,7 +66,7 @@ Teuchos::RCP<const ParameterList> validDeckParameters() {
                "Krylov tolerance of each Newton solve: Adaptive (as loose as the iterate can use, "
                "solver/LinearTolerance.hpp) or Fixed (NOX's 'Direction'/'Newton'/'Linear Solver'/'Tolerance', "
                "default 1e-10, or its forcing term); a deck that sets either NOX key gets Fixed",
-               io::oneOf({"Adaptive", "Fixed"}));
+               kLinearTolerances.validator());
     newton.set("Maximum Linear Tolerance", defaults.linearTolerance.maximum,
                "loosest relative Krylov tolerance of the Adaptive choice", range<double>(1e-10, 0.5));
     newton.set("Reuse Constant Tangent", true,
@@ -110,7 +115,7 @@ RunSettings parseRunSettings(const ParameterList& deck, const std::string& deckP
   run.numberOfSteps = io::valueOrDefault<int>(sub("Load Stepping"), stepping, "Number of Steps");
   run.finalTime = io::valueOrDefault<double>(sub("Load Stepping"), stepping, "Final Time");
   run.maximumCutbacks = io::valueOrDefault<int>(sub("Load Stepping"), stepping, "Maximum Cutbacks");
-  run.extrapolate = io::valueOrDefault<std::string>(sub("Load Stepping"), stepping, "Predictor") == "Extrapolate";
+  run.extrapolate = kPredictors.value(io::valueOrDefault<std::string>(sub("Load Stepping"), stepping, "Predictor"));
   const auto& newton = valid.sublist("Newton");
   run.newton.maximumIterations = io::valueOrDefault<int>(sub("Newton"), newton, "Maximum Iterations");
   run.newton.relativeTolerance = io::valueOrDefault<double>(sub("Newton"), newton, "Relative Tolerance");
@@ -119,11 +124,11 @@ RunSettings parseRunSettings(const ParameterList& deck, const std::string& deckP
   run.reuseConstantTangent = io::valueOrDefault<bool>(sub("Newton"), newton, "Reuse Constant Tangent");
   run.newton.reusePreconditioner = io::valueOrDefault<bool>(sub("Newton"), newton, "Reuse Preconditioner");
   const bool userFixesLinearTolerance = NewtonSolver::noxSetsLinearTolerance(sub("Nonlinear Solver"));
-  const auto linearTolerance = io::valueOrDefault<std::string>(sub("Newton"), newton, "Linear Tolerance");
-  if (userFixesLinearTolerance && sub("Newton").isParameter("Linear Tolerance") && linearTolerance == "Adaptive")
+  const bool adaptive = kLinearTolerances.value(io::valueOrDefault<std::string>(sub("Newton"), newton, "Linear Tolerance"));
+  if (userFixesLinearTolerance && sub("Newton").isParameter("Linear Tolerance") && adaptive)
     throw Error("deck: 'Newton/Linear Tolerance' = Adaptive contradicts the NOX 'Nonlinear Solver/Direction/Newton' "
                 "tolerance or forcing term the deck sets");
-  run.newton.linearTolerance.adaptive = linearTolerance == "Adaptive" && !userFixesLinearTolerance;
+  run.newton.linearTolerance.adaptive = adaptive && !userFixesLinearTolerance;
   std::string output = io::valueOrDefault<std::string>(sub("Output"), valid.sublist("Output"), "File");
   if (output.empty()) output = std::filesystem::path(deckPath).filename().replace_extension(".e").string();
   run.outputFile = resolve(output, deckPath);
