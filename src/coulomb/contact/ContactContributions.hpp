@@ -59,6 +59,18 @@ struct PairIterationSummary {
   /// A hash of every slave node's state (the same on every rank and for any
   /// partition): equal sets have equal signatures (ActiveSetCycle).
   std::uint64_t setSignature = 0;
+  /// Adds the force `force` on a slave node, of normal part `normalPart`
+  /// (the rest is tangential), to the totals and norms.
+  template <std::size_t N>
+  void addSlaveForce(const std::array<double, N>& force, const std::array<double, N>& normalPart) {
+    for (std::size_t c = 0; c < N; ++c) {
+      slaveForce[c] += force[c];
+      normalForce[c] += normalPart[c];
+      tangentialForce[c] += force[c] - normalPart[c];
+      contactForce2 += force[c] * force[c];
+      tangentialForce2 += (force[c] - normalPart[c]) * (force[c] - normalPart[c]);
+    }
+  }
 };
 
 }  // namespace coulomb::contact

@@ -176,11 +176,6 @@ void ContactPair::widenSearchRadius() {
   if (deepest > 0.0) widenedRadius_ = std::max(widenedRadius_, 2.0 * deepest);
 }
 
-bool ContactPair::isPrescribed(long long node, int c) const {
-  const int i = interface_->interfaceNodeIndex(node);
-  return i >= 0 && prescribed_[i][c];
-}
-
 void ContactPair::search() {
   std::string failure;
   try {
@@ -301,7 +296,7 @@ SlaveNode ContactPair::slaveNode(std::size_t i, bool derivatives) {
   for (int c = 0; c < dim_ && coupling != nullptr; ++c) {
     if (!n.prescribed[c]) continue;
     bool shared = false;
-    for (const auto& [master, Mjl] : coupling->M) shared = shared || isPrescribed(master, c);
+    for (const auto& [master, Mjl] : coupling->M) shared = shared || isPrescribedDof(*interface_, prescribed_, master, c);
     n.driven[c] = !shared;
   }
   n.epsN = penalty_[i];

@@ -130,7 +130,6 @@ private:
   void widenSearchRadius();
   /// Sums the summary over ranks.
   void reduceSummary(PairIterationSummary& summary) const;
-  bool isPrescribed(long long node, int c) const;
 
   const mesh::Mesh& mesh_;
   Teuchos::RCP<const Map> dofMap_;

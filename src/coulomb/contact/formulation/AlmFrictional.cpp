@@ -8,6 +8,7 @@
 /// (ContactContributions::prescribedForce): the supports carry them.
 #include <cmath>
 
+#include "coulomb/contact/formulation/FrictionParameters.hpp"
 #include "coulomb/contact/laws/FrictionalNode.hpp"
 #include "coulomb/contact/formulation/Formulations.hpp"
 
@@ -18,21 +19,7 @@ namespace {
 template <int dim>
 class AlmFrictional final : public Formulation {
 public:
-  explicit AlmFrictional(const PairConstants& c) : c_(c) {
-    const ContactPairSettings& s = *c.settings;
-    p_.k = c.k;  // eps_n, eps_tau and mu are the node's: parameters()
-    p_.thickness = c.thickness;
-    p_.slipAugmentation = s.slipAugmentation;
-    p_.slipThreshold = s.slipThreshold;
-    // 1e-10 of the slave face size: far above the round-off of the
-    // coordinates, far below any slip that matters.
-    p_.roundOffSlip = 1e-10 * c.faceSize;
-    p_.touchingGap = c.touchingGap();
-    p_.law = s.friction;
-    p_.multiPointConstraint = s.formulation == ContactFormulation::MPC;
-    p_.slipDirectionFromSlip = s.slipResetFrequency < 0;
-    p_.pureSlip = s.pureSlip;
-  }
+  explicit AlmFrictional(const PairConstants& c) : c_(c), p_(pairFrictionalParameters(c)) {}
 
   bool usesResidual() const override { return true; }
   bool usesSlip() const override { return true; }
@@ -64,15 +51,12 @@ public:
     // Forces and residual figures: the recovered traction acts on the slave.
     double tn = 0;
     for (int c = 0; c < dim; ++c) tn += k.lambda[c] * nv[c];
+    std::array<double, dim> force{}, normalPart{};
     for (int c = 0; c < dim; ++c) {
-      const double force = kt * entry.D * k.lambda[c];
-      const double normalPart = kt * entry.D * tn * nv[c];
-      summary.slaveForce[c] += force;
-      summary.normalForce[c] += normalPart;
-      summary.tangentialForce[c] += force - normalPart;
-      summary.contactForce2 += force * force;
-      summary.tangentialForce2 += (force - normalPart) * (force - normalPart);
+      force[c] = kt * entry.D * k.lambda[c];
+      normalPart[c] = kt * entry.D * tn * nv[c];
     }
+    summary.addSlaveForce(force, normalPart);
 
     // The explicit part of d(row)/dx: through n, w, D and g~ (the r part is
     // tangentTransform). Kernel inputs: r [0, dim), n [dim, 2 dim), w [2 dim, 3 dim), D, g~.
@@ -155,13 +139,7 @@ private:
     in.previousDirection = first<dim>(n.state->slipDirection);
     return in;
   }
-  FrictionalParameters parameters(const SlaveNode& n) const {
-    FrictionalParameters p = p_;
-    p.law.coefficient = n.frictionCoefficient;
-    p.epsN = n.epsN;
-    p.epsTau = c_.settings->tangentFactor * n.epsN;
-    return p;
-  }
+  FrictionalParameters parameters(const SlaveNode& n) const { return nodeFrictionalParameters(p_, n, c_); }
 
   PairConstants c_;
   FrictionalParameters p_;

@@ -40,12 +40,9 @@ public:
     auto row = [&sink](long long node, int c) { return sink.row(node, c); };
 
     // Slave force f_j = k t lambda_n D n acting on the slave body.
-    for (int c = 0; c < dim; ++c) {
-      const double force = c_.k * t * D * lambdaN * nv[c];
-      summary.slaveForce[c] += force;
-      summary.normalForce[c] += force;
-      summary.contactForce2 += force * force;
-    }
+    std::array<double, dim> force{};
+    for (int c = 0; c < dim; ++c) force[c] = c_.k * t * D * lambdaN * nv[c];
+    summary.addSlaveForce(force, force);
     // Forces on prescribed DoFs (slave f_j, master -k t lambda_n M_jl n): the supports'.
     for (int c = 0; c < dim; ++c) {
       if (n.prescribed[c]) out.prescribedForce.push_back({row(n.node, c), c_.k * t * D * lambdaN * nv[c]});

@@ -2,6 +2,7 @@
 /// @brief Penalty with friction (4.71a with a return map, FrictionalNode.hpp):
 /// the force f of the node's traction on the slave (residual -f,
 /// K_c = -df/dx through n, w, D, g~) and -(M_jl / D) f on the masters.
+#include "coulomb/contact/formulation/FrictionParameters.hpp"
 #include "coulomb/contact/laws/FrictionalNode.hpp"
 #include "coulomb/contact/formulation/Formulations.hpp"
 
@@ -12,17 +13,7 @@ namespace {
 template <int dim>
 class PenaltyFrictional final : public Formulation {
 public:
-  explicit PenaltyFrictional(const PairConstants& c) : c_(c) {
-    const ContactPairSettings& s = *c.settings;
-    p_.k = c.k;
-    p_.thickness = c.thickness;
-    p_.slipAugmentation = s.slipAugmentation;
-    p_.slipThreshold = s.slipThreshold;
-    p_.roundOffSlip = 1e-10 * c.faceSize;
-    p_.touchingGap = c.touchingGap();
-    p_.law = s.friction;
-    p_.pureSlip = s.pureSlip;
-  }
+  explicit PenaltyFrictional(const PairConstants& c) : c_(c), p_(pairFrictionalParameters(c)) {}
 
   bool usesSlip() const override { return true; }
 
@@ -50,13 +41,9 @@ public:
     for (int c = 0; c < dim; ++c) n.state->traction[c] = f.traction[c] - f.pressure * nv[c];
     double fn = 0;
     for (int c = 0; c < dim; ++c) fn += f.force[c] * nv[c];
-    for (int c = 0; c < dim; ++c) {
-      summary.slaveForce[c] += f.force[c];
-      summary.normalForce[c] += fn * nv[c];
-      summary.tangentialForce[c] += f.force[c] - fn * nv[c];
-      summary.contactForce2 += f.force[c] * f.force[c];
-      summary.tangentialForce2 += (f.force[c] - fn * nv[c]) * (f.force[c] - fn * nv[c]);
-    }
+    std::array<double, dim> normalPart{};
+    for (int c = 0; c < dim; ++c) normalPart[c] = fn * nv[c];
+    summary.addSlaveForce(f.force, normalPart);
     // Kernel inputs: n [0, dim), w [dim, 2 dim), D, g~.
     auto derivative = [&](int c) {
       DerivativeRow row;
@@ -105,13 +92,7 @@ private:
     in.gap = entry.gap;
     return in;
   }
-  FrictionalParameters parameters(const SlaveNode& n) const {
-    FrictionalParameters p = p_;
-    p.law.coefficient = n.frictionCoefficient;
-    p.epsN = n.epsN;
-    p.epsTau = c_.settings->tangentFactor * n.epsN;
-    return p;
-  }
+  FrictionalParameters parameters(const SlaveNode& n) const { return nodeFrictionalParameters(p_, n, c_); }
 
   PairConstants c_;
   FrictionalParameters p_;

@@ -30,12 +30,9 @@ public:
     const NodalMortarEntry& entry = *n.mortarDerivative;
     const NodalNormal& normal = *n.normalDerivative;
     const double t = c_.thickness, D = entry.D;
-    for (int c = 0; c < dim; ++c) {
-      const double force = -n.state->pressure * t * D * normal.n[c];
-      summary.slaveForce[c] += force;
-      summary.normalForce[c] += force;
-      summary.contactForce2 += force * force;
-    }
+    std::array<double, dim> force{};
+    for (int c = 0; c < dim; ++c) force[c] = -n.state->pressure * t * D * normal.n[c];
+    summary.addSlaveForce(force, force);
     auto& out = sink.out;
     auto rows = [&](long long target, const NodalForce<dim>& f, const DerivativeRow* dM) {
       for (int c = 0; c < dim; ++c) {

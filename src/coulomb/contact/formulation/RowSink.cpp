@@ -12,10 +12,13 @@ RowSink::RowSink(ContactContributions& contributions, const ContactInterface& co
       dim_(contact.dimension()),
       multiplierOffset_(multiplierOffset) {}
 
-bool RowSink::prescribed(long long node, int c) const {
-  const int i = contact_.interfaceNodeIndex(node);
-  return i >= 0 && prescribed_[i][c];
+bool isPrescribedDof(const ContactInterface& contact, const std::vector<std::array<bool, 3>>& prescribed,
+                     long long node, int c) {
+  const int i = contact.interfaceNodeIndex(node);
+  return i >= 0 && prescribed[i][c];
 }
+
+bool RowSink::prescribed(long long node, int c) const { return isPrescribedDof(contact_, prescribed_, node, c); }
 
 void RowSink::add(std::vector<linalg::MatrixTriplet>& to, GlobalOrdinal target, const DerivativeRow& d,
                   double scale) const {

@@ -15,6 +15,11 @@ namespace coulomb::contact {
 
 class ContactInterface;
 
+/// Component c of global node `node` is a Dirichlet DoF (`prescribed` by
+/// interface node index; a node off the interface is not).
+bool isPrescribedDof(const ContactInterface& contact, const std::vector<std::array<bool, 3>>& prescribed,
+                     long long node, int c);
+
 class RowSink {
 public:
   /// `prescribed[i][c]`: component c of interface node i is a Dirichlet DoF.
