@@ -69,6 +69,8 @@ coulomb_bad_input(contact_friction_unknown_law "'Contact/Pairs/punch/Friction La
 coulomb_bad_input(contact_friction_zero_tangent_factor "'Contact/Pairs/punch/Tangent Factor'")
 coulomb_bad_input(contact_friction_penalty_negative_reset "'Contact/Pairs/punch/Slip Reset Frequency' < 0.*ALM and MPC")
 coulomb_bad_input(contact_saddle_point_frictional "'Contact/System Form' = Saddle Point.*'Contact/Pairs/punch' is frictional")
+coulomb_bad_input(contact_ensure_contact_separating "Contact/Pairs/punch: 'Ensure Contact' is set but the step to t = 0.5 converged with no slave node in contact" NP 1 2)
+coulomb_bad_input(contact_lmm_condensed "'Contact/Pairs/punch/Formulation' = LMM.*'Contact/System Form' must be Saddle Point")
 coulomb_bad_input(contact_saddle_point_iterative_solver "'Linear Solver/Linear Solver Type' must be Amesos2")
 coulomb_bad_input(dirichlet_rotation_with_value "'Dirichlet Conditions/turn/Rotation Angle'.*no 'Value'")
 coulomb_bad_input(contact_friction_missing_field "'Contact/Pairs/punch/Friction Coefficient Field'.*no nodal variable 'mu'")

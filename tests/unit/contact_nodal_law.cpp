@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <sstream>
+#include <string>
 #include <vector>
 
 #include "coulomb/contact/laws/ActiveSet.hpp"
@@ -238,6 +239,23 @@ TEST(ActiveSetRule, ThresholdAtZeroAugmentedMultiplier) {
   EXPECT_EQ(almState<2>(in, AlmParameters{2.0, 3.0, 1.0}), ContactState::Inactive);
   EXPECT_EQ(static_cast<int>(ContactState::Inactive), 0);
   EXPECT_EQ(static_cast<int>(ContactState::Slip), 1);
+}
+
+// Slip Reset Frequency counts deck steps: the sub-steps of a cut (or
+// knot-split) deck step all follow that step, and the pattern 1, 1 + n, ...
+// does not shift (counting sub-steps, steps 2 and 3 below would reset).
+TEST(ActiveSetRule, SlipResetCountsDeckSteps) {
+  const int deckStepOfSubStep[] = {1, 1, 2, 3, 3, 3, 4, 5, 6, 7};
+  std::string two, three, one;
+  for (int step : deckStepOfSubStep) {
+    one += resetsSlip(1, step) ? 'R' : '.';
+    two += resetsSlip(2, step) ? 'R' : '.';
+    three += resetsSlip(3, step) ? 'R' : '.';
+  }
+  EXPECT_EQ(one, "RRRRRRRRRR");
+  EXPECT_EQ(two, "RR.RRR.R.R");
+  EXPECT_EQ(three, "RR....R..R");
+  for (int step = 1; step < 5; ++step) EXPECT_FALSE(resetsSlip(0, step));
 }
 
 TEST(ActiveSetSummary, CountsChangesPrintsAndCompares) {

@@ -50,6 +50,11 @@ struct PairIterationSummary {
   double stickResidual2 = 0;   ///< sum of the squared stick rows (frictional pairs)
   double slipResidual2 = 0;    ///< sum of the squared slip rows (frictional pairs)
   double tangentialForce2 = 0;  ///< sum of |tangential part of f_j|^2 over active slave nodes (frictional pairs)
+  /// The change of the nodal contact forces since the last update, by group
+  /// (Contact/Convergence Criterion = Increment, Mixed): sums over active
+  /// nodes of (t D_j Δp_j)^2, and of |t D_j Δt_tau,j|^2 over sticking and
+  /// over slipping nodes.
+  double normalIncrement2 = 0, stickIncrement2 = 0, slipIncrement2 = 0;
   std::array<double, 3> slaveForce{};  ///< total contact force on the slave body
   std::array<double, 3> normalForce{};  ///< its normal part, sum of the nodal normal forces
   std::array<double, 3> tangentialForce{};  ///< its tangential part

@@ -57,10 +57,18 @@ bool ContactModel::needsNonsymmetricSolver() const {
   return false;
 }
 
-void ContactModel::beginStep() {
+void ContactModel::beginStep(int deckStep) {
   updatesInStep_ = 0;
   cycle_.clear();
-  for (auto& pair : pairs_) pair->beginStep();
+  for (auto& pair : pairs_) pair->beginStep(deckStep);
+}
+
+void ContactModel::checkContact(double time) const {
+  // The summaries are sums over the ranks: every rank takes the same branch.
+  for (std::size_t p = 0; p < pairs_.size(); ++p)
+    COULOMB_REQUIRE(!pairs_[p]->settings().ensureContact || pairSummaries_[p].activeSet.active > 0,
+                    "Contact/Pairs/" << pairs_[p]->settings().name << ": 'Ensure Contact' is set but the step to t = "
+                                     << time << " converged with no slave node in contact");
 }
 
 void ContactModel::restoreStep() {
@@ -73,7 +81,7 @@ template <class UpdatePair>
 void ContactModel::updatePairs(bool freezeSet, UpdatePair&& updatePair) {
   contributions_ = ContactContributions();
   summary_ = ContactIterationSummary();
-  double normal2 = 0, force2 = 0, stick2 = 0, slip2 = 0, tangential2 = 0;
+  double normal2 = 0, force2 = 0, stick2 = 0, slip2 = 0, tangential2 = 0, dNormal2 = 0, dStick2 = 0, dSlip2 = 0;
   for (std::size_t p = 0; p < pairs_.size(); ++p) {
     // Simplified semi-smooth Newton: the set moves at the predictor and the first iterate only.
     const bool updateSet =
@@ -85,6 +93,9 @@ void ContactModel::updatePairs(bool freezeSet, UpdatePair&& updatePair) {
     stick2 += pairSummaries_[p].stickResidual2;
     slip2 += pairSummaries_[p].slipResidual2;
     tangential2 += pairSummaries_[p].tangentialForce2;
+    dNormal2 += pairSummaries_[p].normalIncrement2;
+    dStick2 += pairSummaries_[p].stickIncrement2;
+    dSlip2 += pairSummaries_[p].slipIncrement2;
     summary_.frictional = summary_.frictional || pairs_[p]->frictional();
   }
   ++updatesInStep_;
@@ -108,6 +119,9 @@ void ContactModel::updatePairs(bool freezeSet, UpdatePair&& updatePair) {
   summary_.stickResidual = std::sqrt(stick2);
   summary_.slipResidual = std::sqrt(slip2);
   summary_.tangentialForce = std::sqrt(tangential2);
+  summary_.normalIncrement = std::sqrt(dNormal2);
+  summary_.stickIncrement = std::sqrt(dStick2);
+  summary_.slipIncrement = std::sqrt(dSlip2);
 }
 
 void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool freezeSet) {
@@ -272,17 +286,20 @@ Teuchos::RCP<CrsMatrix> ContactModel::saddlePointTangent(const CrsMatrix& bulkTa
 }
 
 bool ContactModel::converged() const {
-  return summary_.activeSet.unchanged() && summary_.normalConverged(settings_) &&
-         summary_.tangentialConverged(settings_);
+  if (!summary_.activeSet.unchanged()) return false;
+  // (4.78) on the contact rows, or the seed's increment and mixed criteria on the force increments.
+  if (settings_.criterion != ConvergenceCriterion::Residual) return summary_.incrementsConverged(settings_);
+  return summary_.normalConverged(settings_) && summary_.tangentialConverged(settings_);
 }
 
 std::vector<std::string> ContactModel::nodalFieldNames() const {
   std::vector<std::string> names = {"contact_pressure", "contact_gap", "contact_weighted_gap", "contact_area",
-                                    "contact_state"};
+                                    "contact_state",    "contact_augmented_pressure"};
   for (int c = 0; c < dim_; ++c) names.push_back(std::string("contact_normal_") + kComponents[c]);
   for (int c = 0; c < dim_; ++c) names.push_back(std::string("contact_multiplier_") + kComponents[c]);
   if (anyFrictional())
-    for (const char* field : {"contact_tangential_traction_", "contact_weighted_slip_", "contact_slip_"})
+    for (const char* field : {"contact_tangential_traction_", "contact_weighted_slip_", "contact_slip_",
+                              "contact_augmented_traction_"})
       for (int c = 0; c < dim_; ++c) names.push_back(std::string(field) + kComponents[c]);
   return names;
 }
@@ -300,7 +317,8 @@ void ContactModel::nodalFields(const Teuchos::RCP<const Map>& ownedNodeMap, Mult
       view[2][i] = o.weightedGap;
       view[3][i] = o.area;
       view[4][i] = static_cast<double>(static_cast<int>(o.state));
-      constexpr int vectors = 5;
+      view[5][i] = o.augmentedPressure;
+      constexpr int vectors = 6;
       for (int c = 0; c < dim_; ++c) {
         view[vectors + c][i] = o.normal[c];
         view[vectors + dim_ + c][i] = o.multiplier[c];
@@ -308,6 +326,7 @@ void ContactModel::nodalFields(const Teuchos::RCP<const Map>& ownedNodeMap, Mult
           view[vectors + 2 * dim_ + c][i] = o.tangentialTraction[c];
           view[vectors + 3 * dim_ + c][i] = o.weightedSlip[c];
           view[vectors + 4 * dim_ + c][i] = o.slip[c];
+          view[vectors + 5 * dim_ + c][i] = o.augmentedTraction[c];
         }
       }
     }

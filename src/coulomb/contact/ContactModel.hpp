@@ -29,6 +29,9 @@ struct ContactIterationSummary {
   double slipResidual = 0;    ///< ||slip rows|| (frictional pairs) [force]
   double tangentialForce = 0;  ///< ||tangential parts of f_j|| over active slave nodes [force]
   bool frictional = false;    ///< some pair has friction (the stick/slip columns are printed)
+  /// ||change of the nodal contact forces since the last update|| by group
+  /// (normal, stick, slip) [force]: PairIterationSummary::normalIncrement2.
+  double normalIncrement = 0, stickIncrement = 0, slipIncrement = 0;
   /// The normal constraint test of ContactSettings.
   bool normalConverged(const ContactSettings& s) const {
     return normalResidual <= s.normalRelativeTolerance * contactForce + s.normalAbsoluteTolerance;
@@ -41,6 +44,14 @@ struct ContactIterationSummary {
     if (tangentialForce <= s.tangentNormalRatio * contactForce) return true;
     return stickResidual <= s.stickRelativeTolerance * contactForce + s.stickAbsoluteTolerance &&
            slipResidual <= s.slipRelativeTolerance * contactForce + s.slipAbsoluteTolerance;
+  }
+  /// The same three tests on the force increments (the seed's increment and
+  /// mixed criteria; the tangential ones skipped as above).
+  bool incrementsConverged(const ContactSettings& s) const {
+    if (normalIncrement > s.normalRelativeTolerance * contactForce + s.normalAbsoluteTolerance) return false;
+    if (tangentialForce <= s.tangentNormalRatio * contactForce) return true;
+    return stickIncrement <= s.stickRelativeTolerance * contactForce + s.stickAbsoluteTolerance &&
+           slipIncrement <= s.slipRelativeTolerance * contactForce + s.slipAbsoluteTolerance;
   }
 };
 
@@ -59,8 +70,13 @@ public:
   /// True when some pair is ALM or frictional: the tangent is not symmetric.
   bool needsNonsymmetricSolver() const;
 
-  void beginStep();
+  /// A sub-step of deck step `deckStep` (1-based) begins / failed (ContactPair).
+  void beginStep(int deckStep);
   void restoreStep();
+  /// Collective, after a converged step at time `time`: throws coulomb::Error
+  /// (on every rank) naming the first pair with 'Ensure Contact' that has no
+  /// active slave node.
+  void checkContact(double time) const;
 
   /// Collective: contact state at `u` with bulk residual `bulkResidual`,
   /// contributions stored for the two calls below. `freezeSet`: keep the

@@ -116,12 +116,12 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
   nodes_.assign(owned, SlaveNodeState{});
   accumulatedSlip_.assign(owned, {0.0, 0.0, 0.0});
   lastStepSlip_ = accumulatedSlip_;
-  beginStep();
+  beginStep(1);
 }
 
 ContactPair::~ContactPair() = default;
 
-void ContactPair::beginStep() {
+void ContactPair::beginStep(int deckStep) {
   searched_ = false;
   // The last update was at the converged state of the previous step: its
   // operators and coordinates are the D^t, M^t, x^t of the slip (4.69).
@@ -135,9 +135,8 @@ void ContactPair::beginStep() {
       lastStepSlip_[i] =
           nodes_[i].state == ContactState::Slip ? nodes_[i].weightedSlip : std::array<double, 3>{0.0, 0.0, 0.0};
   restored_ = false;
-  // Slip reset policy: slipping nodes start the step as stick every n-th step.
-  const int n = settings_.slipResetFrequency;
-  const bool reset = frictional() && n > 0 && steps_ % n == 0;
+  // Slip reset policy: slipping nodes start the step as stick every n-th deck step.
+  const bool reset = frictional() && resetsSlip(settings_.slipResetFrequency, deckStep);
   for (std::size_t i = 0; i < nodes_.size(); ++i) {
     auto& node = nodes_[i];
     for (int c = 0; c < 3; ++c) accumulatedSlip_[i][c] += node.slipIncrement[c];
@@ -145,7 +144,6 @@ void ContactPair::beginStep() {
     if (reset && node.state == ContactState::Slip) node.state = ContactState::Stick;
     if (node.state != ContactState::Slip) node.slipDirection = {0.0, 0.0, 0.0};
   }
-  ++steps_;
   stepStart_ = nodes_;
 }
 
@@ -155,7 +153,6 @@ void ContactPair::restoreStep() {
   nodes_ = stepStart_;
   mortar_ = stepStartMortar_;
   x_ = stepStartX_;
-  --steps_;
   searched_ = false;
   restored_ = true;
 }
@@ -323,6 +320,7 @@ PairIterationSummary ContactPair::updateNodes(const Vector* bulkResidual, const 
   COULOMB_CHECK(z == nullptr || z->size() == owned, "one multiplier per owned slave node");
 
   // Stage 1 (values): the new states.
+  const std::vector<SlaveNodeState> before = nodes_;
   PairIterationSummary summary;
   std::string failure;
   std::vector<char> flags(owned, 0);
@@ -343,8 +341,8 @@ PairIterationSummary ContactPair::updateNodes(const Vector* bulkResidual, const 
         if (failure.empty()) failure = std::move(deep);
       }
     } else {
-      node.lambdaN = node.pressure = 0.0;
-      node.traction = {0.0, 0.0, 0.0};
+      node.lambdaN = node.pressure = node.augmentedPressure = 0.0;
+      node.traction = node.augmentedTraction = {0.0, 0.0, 0.0};
     }
     if (!isActive(state)) node.weightedSlip = node.slipIncrement = {0.0, 0.0, 0.0};  // an open node does not slip
     if (state != ContactState::Slip) node.slipDirection = {0.0, 0.0, 0.0};      // stage 2 sets it for the slipping ones
@@ -368,6 +366,7 @@ PairIterationSummary ContactPair::updateNodes(const Vector* bulkResidual, const 
     }
     formulation_->emit(n, sink, summary);
   }
+  addForceIncrements(before, summary);
   reduceSummary(summary);
   return summary;
 }

@@ -52,8 +52,9 @@ public:
   const ContactPairSettings& settings() const { return settings_; }
   const ContactInterface& interface() const { return *interface_; }
 
-  /// A new load step: the next update searches; the state is saved for restoreStep().
-  void beginStep();
+  /// A new (sub-)step of deck step `deckStep` (1-based; StepController::nominalStep):
+  /// the next update searches; the state is saved for restoreStep().
+  void beginStep(int deckStep);
   /// The step failed (cutback): back to the state saved by beginStep().
   void restoreStep();
 
@@ -85,6 +86,9 @@ public:
     /// in contact with the master (current configuration; force = D_j x traction).
     double area = 0;
     double penalty = 0;  ///< eps_n of the node
+    /// SlaveNodeState::augmentedPressure, augmentedTraction (tangential, frictional pairs).
+    double augmentedPressure = 0;
+    std::array<double, 3> augmentedTraction{};
     std::array<double, 3> normal{}, multiplier{};
     /// Frictional pairs: tangential traction on the slave, weighted slip
     /// increment of the step (seed sign, 4.69b), accumulated slip of the
@@ -130,6 +134,9 @@ private:
   void widenSearchRadius();
   /// Sums the summary over ranks.
   void reduceSummary(PairIterationSummary& summary) const;
+  /// The force increments of the summary (PairIterationSummary::normalIncrement2
+  /// etc.) from the node states `before` this update to nodes_.
+  void addForceIncrements(const std::vector<SlaveNodeState>& before, PairIterationSummary& summary) const;
 
   const mesh::Mesh& mesh_;
   Teuchos::RCP<const Map> dofMap_;
@@ -164,7 +171,6 @@ private:
   // accumulated over the steps before this one.
   NodalMortarQuantities stepStartMortar_;
   InterfaceConfiguration stepStartX_;
-  int steps_ = 0;
   std::vector<std::array<double, 3>> accumulatedSlip_;
   /// The weighted slip of the last converged step (the slip direction of
   /// Slip Reset Frequency < 0); kept through a restoreStep().

@@ -14,7 +14,8 @@ namespace coulomb::contact {
 void ContactPair::reduceSummary(PairIterationSummary& summary) const {
   const auto& comm = *interface_->comm();
   std::vector<double> values = {summary.normalResidual2, summary.contactForce2, summary.stickResidual2,
-                                summary.slipResidual2};
+                                summary.slipResidual2,   summary.normalIncrement2, summary.stickIncrement2,
+                                summary.slipIncrement2};
   for (const auto* v : {&summary.slaveForce, &summary.normalForce, &summary.tangentialForce})
     values.insert(values.end(), v->begin(), v->end());
   values.push_back(summary.tangentialForce2);
@@ -24,12 +25,15 @@ void ContactPair::reduceSummary(PairIterationSummary& summary) const {
   summary.contactForce2 = totals[1];
   summary.stickResidual2 = totals[2];
   summary.slipResidual2 = totals[3];
+  summary.normalIncrement2 = totals[4];
+  summary.stickIncrement2 = totals[5];
+  summary.slipIncrement2 = totals[6];
   for (int c = 0; c < 3; ++c) {
-    summary.slaveForce[c] = totals[4 + c];
-    summary.normalForce[c] = totals[7 + c];
-    summary.tangentialForce[c] = totals[10 + c];
+    summary.slaveForce[c] = totals[7 + c];
+    summary.normalForce[c] = totals[10 + c];
+    summary.tangentialForce[c] = totals[13 + c];
   }
-  summary.tangentialForce2 = totals[13];
+  summary.tangentialForce2 = totals[16];
   // The set's signature (ActiveSetCycle): the sum of its nodes' hashes.
   long long signature = 0;
   const auto& owned = interface_->ownedSlaveNodes();
@@ -55,6 +59,25 @@ void ContactPair::reduceSummary(PairIterationSummary& summary) const {
   summary.setSignature = static_cast<std::uint64_t>(countTotals[7]);
 }
 
+void ContactPair::addForceIncrements(const std::vector<SlaveNodeState>& before, PairIterationSummary& summary) const {
+  const auto& owned = interface_->ownedSlaveNodes();
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    const SlaveNodeState &now = nodes_[i], &was = before[i];
+    const NodalMortarEntry* entry = mortar_.find(interface_->slaveNodes()[owned[i]]);
+    if (!isActive(now.state) || entry == nullptr) continue;
+    const double scale = constants_.thickness * entry->D;
+    const double dp = scale * (now.pressure - was.pressure);
+    summary.normalIncrement2 += dp * dp;
+    const auto& n = normals_[owned[i]].n;
+    std::array<double, 3> dt{};
+    double dn = 0;
+    for (int c = 0; c < 3; ++c) dt[c] = scale * (now.traction[c] - was.traction[c]), dn += dt[c] * n[c];
+    double tangential2 = 0;
+    for (int c = 0; c < 3; ++c) tangential2 += (dt[c] - dn * n[c]) * (dt[c] - dn * n[c]);
+    (now.state == ContactState::Stick ? summary.stickIncrement2 : summary.slipIncrement2) += tangential2;
+  }
+}
+
 std::vector<ContactPair::NodeOutput> ContactPair::nodeOutput() const {
   std::vector<NodeOutput> out;
   const auto& owned = interface_->ownedSlaveNodes();
@@ -65,6 +88,7 @@ std::vector<ContactPair::NodeOutput> ContactPair::nodeOutput() const {
     o.state = node.state;
     o.pressure = node.pressure;
     o.penalty = penalty_[i];
+    o.augmentedPressure = node.augmentedPressure;
     if (const NodalMortarEntry* entry = mortar_.find(o.node)) {
       o.weightedGap = entry->gap;
       o.area = entry->D;
@@ -78,6 +102,7 @@ std::vector<ContactPair::NodeOutput> ContactPair::nodeOutput() const {
       for (int c = 0; c < 3; ++c) {
         o.multiplier[c] = node.traction[c] / constants_.k;
         o.tangentialTraction[c] = node.traction[c] - tn * o.normal[c];
+        o.augmentedTraction[c] = node.augmentedTraction[c];
         o.weightedSlip[c] = node.weightedSlip[c];
         o.slip[c] = accumulatedSlip_[i][c] + node.slipIncrement[c];
       }

@@ -21,13 +21,19 @@ namespace {
 // The deck's enumerations, each declared once (names, values; the validator,
 // the parse and the messages come from these tables).
 const io::Choices<ContactFormulation> kFormulations{
-    {"ALM", ContactFormulation::ALM}, {"Penalty", ContactFormulation::Penalty}, {"MPC", ContactFormulation::MPC}};
+    {"ALM", ContactFormulation::ALM},
+    {"Penalty", ContactFormulation::Penalty},
+    {"MPC", ContactFormulation::MPC},
+    {"LMM", ContactFormulation::LMM}};
 const io::Choices<SemiSmoothNewton> kSemiSmooth{{"Full", SemiSmoothNewton::Full},
                                                 {"Simplified", SemiSmoothNewton::Simplified}};
 const io::Choices<FrictionLawType> kFrictionLaws{
     {"None", FrictionLawType::None}, {"Coulomb", FrictionLawType::Coulomb}, {"Tresca", FrictionLawType::Tresca}};
 const io::Choices<SlipMeasure> kSlipMeasures{{"Objective", SlipMeasure::Objective},
                                              {"Non-Objective", SlipMeasure::NonObjective}};
+const io::Choices<ConvergenceCriterion> kCriteria{{"Residual", ConvergenceCriterion::Residual},
+                                                  {"Increment", ConvergenceCriterion::Increment},
+                                                  {"Mixed", ConvergenceCriterion::Mixed}};
 const io::Choices<ContactSystemForm> kSystemForms{{"Condensed", ContactSystemForm::Condensed},
                                                   {"Saddle Point", ContactSystemForm::SaddlePoint}};
 
@@ -58,10 +64,21 @@ void addValidContactParameters(ParameterList& valid) {
               "the stick and slip tests count as met while ||tangential contact forces|| <= this x ||contact forces|| "
               "(negligible friction; the rows stay in the residual test)",
               io::nonNegative());
+  contact.set("Convergence Criterion", std::string(kCriteria.name(defaults.criterion)),
+              "besides an unchanged active set - Residual: ||f|| (Newton tolerances) and the contact rows by group "
+              "(normal, stick, slip: the tolerances above); Increment: the displacement increment (the increment "
+              "tolerances) and the change of the nodal contact forces by group since the last iterate (the tolerances "
+              "above); Mixed: ||f|| and the contact force changes by group",
+              kCriteria.validator());
+  contact.set("Increment Relative Tolerance", defaults.incrementRelativeTolerance,
+              "Convergence Criterion = Increment: the RMS of |du_i| / (this x |u_i| + the absolute one) <= 1",
+              io::positive());
+  contact.set("Increment Absolute Tolerance", defaults.incrementAbsoluteTolerance,
+              "Convergence Criterion = Increment: absolute part [length]", io::positive());
   contact.set("System Form", std::string(kSystemForms.name(defaults.systemForm)),
-              "Condensed: multipliers eliminated, displacement-only Newton system (default); Saddle Point: the "
-              "multipliers are Newton unknowns, solved by the direct solver (Amesos2) - a check of the condensation, "
-              "ALM frictionless pairs only",
+              "Condensed: multipliers eliminated, displacement-only Newton system (default; LMM pairs: Saddle "
+              "Point); Saddle Point: the multipliers are Newton unknowns, solved by the direct solver (Amesos2) - "
+              "for LMM pairs, and a check of the condensation with ALM frictionless pairs",
               kSystemForms.validator());
   ParameterList& pairs = contact.sublist("Pairs", false, "One sublist per contact pair, named freely");
   ParameterList& pair = pairs.sublist("*", false, "a slave/master pair of side sets");
@@ -71,7 +88,9 @@ void addValidContactParameters(ParameterList& valid) {
   pair.set("Formulation", std::string(kFormulations.name(d.formulation)),
            "ALM: Lagrange multipliers (condensed), no penetration at convergence; Penalty: pressure eps_n <-gap>; "
            "MPC: multipoint constraints (slave tied to master: stick all directions, slip normal only + Coulomb "
-           "force), states from reactions and gaps",
+           "force), states from reactions and gaps; LMM: Lagrange multipliers as Newton unknowns with the "
+           "complementarity functions of the thesis (4.79), frictionless or frictional (System Form = Saddle Point, "
+           "the default with it; a direct solver)",
            kFormulations.validator());
   pair.set("Penalty", d.penalty,
            "normal penalty eps_n [force/length^3]; 0 = automatic: Penalty Factor x E / h (E = min(E_s, E_m), E_s and "
@@ -119,6 +138,9 @@ void addValidContactParameters(ParameterList& valid) {
            "objective slip only where the mortar operators changed by more than this (relative) over the step, "
            "else the non-objective one; 0: objective whenever possible",
            io::nonNegative());
+  pair.set("Ensure Contact", d.ensureContact,
+           "a converged step in which no slave node of this pair is in contact is an error (the bodies were meant "
+           "to touch: a wrong set, sign or load), instead of a result without contact");
   pair.set("Pure Slip", d.pureSlip,
            "every active node slides, with the law's threshold against its slip (never sticks); every mu = 0 is "
            "frictionless");
@@ -139,7 +161,20 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
   settings.slipAbsoluteTolerance = io::valueOrDefault<double>(user, validContact, "Slip Absolute Tolerance");
   settings.tangentNormalRatio = io::valueOrDefault<double>(user, validContact, "Tangential Normal Ratio");
   settings.systemForm = kSystemForms.value(io::valueOrDefault<std::string>(user, validContact, "System Form"));
+  settings.criterion =
+      kCriteria.value(io::valueOrDefault<std::string>(user, validContact, "Convergence Criterion"));
+  settings.incrementRelativeTolerance =
+      io::valueOrDefault<double>(user, validContact, "Increment Relative Tolerance");
+  settings.incrementAbsoluteTolerance =
+      io::valueOrDefault<double>(user, validContact, "Increment Absolute Tolerance");
   if (!user.isSublist("Pairs")) return settings;
+  // LMM pairs keep their multipliers: the saddle-point form unless the deck says otherwise (an error below).
+  for (auto it = user.sublist("Pairs").begin(); it != user.sublist("Pairs").end(); ++it) {
+    const ParameterList& p = user.sublist("Pairs").sublist(user.sublist("Pairs").name(it));
+    if (!user.isParameter("System Form") && p.isParameter("Formulation") &&
+        p.get<std::string>("Formulation") == kFormulations.name(ContactFormulation::LMM))
+      settings.systemForm = ContactSystemForm::SaddlePoint;
+  }
   const ParameterList& pairs = user.sublist("Pairs");
   const ParameterList& v = validContact.sublist("Pairs").sublist("*");
   for (auto it = pairs.begin(); it != pairs.end(); ++it) {
@@ -169,6 +204,7 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
     if (s.formulation == ContactFormulation::MPC && !p.isParameter("Slip Reset Frequency")) s.slipResetFrequency = 0;
     s.slipMeasure = kSlipMeasures.value(io::valueOrDefault<std::string>(p, v, "Slip Measure"));
     s.pureSlip = io::valueOrDefault<bool>(p, v, "Pure Slip");
+    s.ensureContact = io::valueOrDefault<bool>(p, v, "Ensure Contact");
     s.frictionCoefficientField = io::valueOrDefault<std::string>(p, v, "Friction Coefficient Field");
     s.operatorThreshold = io::valueOrDefault<double>(p, v, "Operator Threshold");
     const std::string where = "deck: 'Contact/Pairs/" + name + "/";
@@ -188,10 +224,16 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
                              "MPC pairs; the penalty traction takes its direction from its return map");
     COULOMB_REQUIRE(s.slave != s.master, "deck: 'Contact/Pairs/" << name << "' names side set '" << s.slave
                                                                   << "' as both Slave and Master");
-    COULOMB_REQUIRE(settings.systemForm == ContactSystemForm::Condensed ||
+    const bool lmm = s.formulation == ContactFormulation::LMM;
+    COULOMB_REQUIRE(settings.systemForm == ContactSystemForm::Condensed || lmm ||
                         (s.formulation == ContactFormulation::ALM && !s.frictional()),
-                    "deck: 'Contact/System Form' = Saddle Point is for ALM frictionless pairs; 'Contact/Pairs/"
-                        << name << "' is " << (s.frictional() ? "frictional" : toString(s.formulation)));
+                    "deck: 'Contact/System Form' = Saddle Point is for LMM and ALM frictionless pairs; 'Contact/Pairs/"
+                        << name << "' is " << (s.frictional() ? "frictional " : "") << toString(s.formulation));
+    COULOMB_REQUIRE(!lmm || settings.systemForm == ContactSystemForm::SaddlePoint,
+                    where << "Formulation' = LMM keeps the multipliers as unknowns: 'Contact/System Form' must be "
+                             "Saddle Point (its default with LMM pairs), not Condensed");
+    COULOMB_REQUIRE(!lmm || (!s.pureSlip && s.slipResetFrequency >= 0),
+                    where << "Formulation' = LMM has no 'Pure Slip' and no 'Slip Reset Frequency' < 0 (ALM options)");
     settings.pairs.push_back(std::move(s));
   }
   return settings;

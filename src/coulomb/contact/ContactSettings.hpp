@@ -21,8 +21,10 @@ namespace coulomb::contact {
 /// the slave node tied to the master by the mortar relation (stick: all
 /// directions; slip: the normal one, with the Coulomb force of the recovered
 /// reaction), states decided by reactions and gaps without penalty
-/// (docs/architecture.md, "MPC").
-enum class ContactFormulation { ALM, Penalty, MPC };
+/// (docs/architecture.md, "MPC"). LMM: Lagrange multipliers as unknowns
+/// with the NCP functions of seed 4.79 (System Form = Saddle Point;
+/// formulation/LagrangeNcp.cpp).
+enum class ContactFormulation { ALM, Penalty, MPC, LMM };
 
 /// Full: the active set is updated at every Newton iteration. Simplified:
 /// only at the first two evaluations of a load step (the predictor and the
@@ -76,6 +78,9 @@ struct ContactPairSettings {
   /// slip has no direction (friction_punch's pressing with Pure Slip stalls
   /// in its first increment, |r_slip| 19 after 25 iterations).
   bool pureSlip = false;
+  /// The seed's ensure_contact: a converged step with no active slave node
+  /// in this pair stops the run with an error (ContactModel::checkContact).
+  bool ensureContact = false;
   /// Coulomb's mu per node from a nodal variable of the mesh file (deck
   /// 'Friction Coefficient Field'; loadFrictionFields fills the values,
   /// indexed by global node); empty: friction.coefficient everywhere.
@@ -98,6 +103,15 @@ struct ContactPairSettings {
   }
 };
 
+/// How a Newton iterate counts as converged besides an unchanged active set
+/// (the seed's criteria, 'Contact/Convergence Criterion'). Residual: the
+/// residual ||f|| and the contact rows by group (4.78). Increment: the
+/// displacement increment (NOX NormWRMS: |du_i| <= Increment Relative
+/// Tolerance |u_i| + Increment Absolute Tolerance in the RMS) and the change
+/// of the nodal contact forces by group (normal, stick, slip). Mixed: the
+/// residual ||f|| and the force changes by group.
+enum class ConvergenceCriterion { Residual, Increment, Mixed };
+
 /// @brief Everything about contact in a deck.
 struct ContactSettings {
   std::vector<ContactPairSettings> pairs;
@@ -114,6 +128,9 @@ struct ContactSettings {
   /// The stick and slip tests are skipped while ||tangential contact forces||
   /// <= this × ||contact forces|| (tangential forces negligible).
   double tangentNormalRatio = 1e-4;
+  ConvergenceCriterion criterion = ConvergenceCriterion::Residual;
+  double incrementRelativeTolerance = 1e-6;   ///< Increment: |du| against |u|
+  double incrementAbsoluteTolerance = 1e-12;  ///< Increment: [length]
 };
 
 /// @brief Valid parameters of "Contact" (added to the deck's list).

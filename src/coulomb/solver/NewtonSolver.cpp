@@ -15,6 +15,7 @@
 #include <NOX_StatusTest_FiniteValue.H>
 #include <NOX_StatusTest_MaxIters.H>
 #include <NOX_StatusTest_NormF.H>
+#include <NOX_StatusTest_NormWRMS.H>
 #include <NOX_Thyra.H>
 #include <NOX_Utils.H>
 #include <Thyra_TpetraThyraWrappers.hpp>
@@ -369,9 +370,13 @@ NewtonReport NewtonSolver::solve(Vector& u) {
   }
 
   using namespace NOX::StatusTest;
-  auto residualSmall = Teuchos::rcp(new ScaledResidualTest(*model_, settings_, group->getNormF()));
   auto converged = Teuchos::rcp(new Combo(Combo::AND));
-  converged->addStatusTest(residualSmall);
+  // Contact/Convergence Criterion = Increment: the displacement increment instead of ||f||.
+  if (contact_ && contact_->settings().criterion == contact::ConvergenceCriterion::Increment)
+    converged->addStatusTest(Teuchos::rcp(new NormWRMS(contact_->settings().incrementRelativeTolerance,
+                                                       contact_->settings().incrementAbsoluteTolerance)));
+  else
+    converged->addStatusTest(Teuchos::rcp(new ScaledResidualTest(*model_, settings_, group->getNormF())));
   if (contact_) converged->addStatusTest(Teuchos::rcp(new ContactStatusTest(*contact_)));
   auto tests = Teuchos::rcp(new Combo(Combo::OR));
   tests->addStatusTest(Teuchos::rcp(new FiniteValue));

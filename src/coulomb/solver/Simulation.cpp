@@ -233,7 +233,7 @@ RunSummary Simulation::run() {
       if (extrapolate) trial.update((next - time) / lastStep, lastIncrement, 1.0);
       constraints.setPrescribedValues(next, trial);
       solvers_->model->setTime(next);
-      if (contact_) contact_->beginStep();
+      if (contact_) contact_->beginStep(steps.nominalStep());
       return solve(trial);
     };
     const bool extrapolate = settings_.extrapolate && lastStep > 0;
@@ -274,6 +274,7 @@ RunSummary Simulation::run() {
       if (contact_) contact_->restoreStep();
       continue;
     }
+    if (contact_) contact_->checkContact(next);
     steps.accept(iterations);
     rejected.clear();
     lastIncrement.update(1.0, trial, -1.0, *displacement_, 0.0);

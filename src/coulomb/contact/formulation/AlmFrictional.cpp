@@ -28,6 +28,9 @@ public:
                       PairIterationSummary& summary) const override {
     auto decided = frictionalState<dim>(input(n, *n.mortar, *n.normal), previous, parameters(n));
     const ContactState state = nextState(decided.state, previous, updateSet, summary.violations);
+    n.state->augmentedPressure = -decided.augmentedNormal;
+    n.state->augmentedTraction = {0.0, 0.0, 0.0};
+    for (int c = 0; c < dim; ++c) n.state->augmentedTraction[c] = decided.augmentedTangent[c];
     if (!isActive(state)) decided = FrictionalNodeState<dim>{};
     n.state->lambdaN = decided.lambdaN;
     n.state->pressure = -c_.k * decided.lambdaN;

@@ -26,6 +26,7 @@ public:
     if (!node.frame.usable) state = ContactState::Inactive;
     n.state->lambdaN = isActive(state) ? node.lambdaN : 0.0;
     n.state->pressure = -c_.k * n.state->lambdaN;
+    n.state->augmentedPressure = node.frame.usable ? -node.augmentedNormal : 0.0;
     return state;
   }
 

@@ -8,7 +8,11 @@ namespace {
 template <int dim>
 std::unique_ptr<Formulation> make(const PairConstants& constants, ContactSystemForm form) {
   const ContactPairSettings& s = *constants.settings;
-  // The deck's check (parseContactSettings) keeps the saddle-point form to ALM frictionless pairs.
+  // The deck's check (parseContactSettings) keeps the saddle-point form to LMM and ALM frictionless pairs.
+  if (s.formulation == ContactFormulation::LMM) {
+    COULOMB_CHECK(form == ContactSystemForm::SaddlePoint, "an LMM pair in the condensed form");
+    return makeLagrangeNcp<dim>(constants);
+  }
   if (form == ContactSystemForm::SaddlePoint) {
     COULOMB_CHECK(s.formulation == ContactFormulation::ALM && !s.frictional(),
                   "the saddle-point form is for ALM frictionless pairs");

@@ -24,6 +24,10 @@ std::unique_ptr<Formulation> makePenaltyFrictional(const PairConstants& constant
 /// ALM frictionless with the multipliers as unknowns (SaddlePoint.cpp).
 template <int dim>
 std::unique_ptr<Formulation> makeSaddlePoint(const PairConstants& constants);
+/// Lagrange multipliers with the NCP functions (4.79), frictionless and
+/// frictional, multipliers as unknowns (LagrangeNcp.cpp).
+template <int dim>
+std::unique_ptr<Formulation> makeLagrangeNcp(const PairConstants& constants);
 
 /// The first `dim` components of a 3-wide array.
 template <int dim, class T>

@@ -24,6 +24,8 @@ public:
         summary.violations);
     // An active node's traction is set by emit() (a stale one until then).
     if (!isActive(state)) n.state->traction = {0.0, 0.0, 0.0}, n.state->lambdaN = n.state->pressure = 0.0;
+    n.state->augmentedPressure = -n.epsN * n.mortar->gap / n.mortar->D;
+    n.state->augmentedTraction = {0.0, 0.0, 0.0};
     return state;
   }
 
@@ -39,6 +41,7 @@ public:
     n.state->lambdaN = -f.pressure / c_.k;
     n.state->traction = {0.0, 0.0, 0.0};
     for (int c = 0; c < dim; ++c) n.state->traction[c] = f.traction[c] - f.pressure * nv[c];
+    for (int c = 0; c < dim; ++c) n.state->augmentedTraction[c] = f.trial[c];
     double fn = 0;
     for (int c = 0; c < dim; ++c) fn += f.force[c] * nv[c];
     std::array<double, dim> normalPart{};

@@ -22,6 +22,7 @@ public:
     const ContactState state = nextState(penaltyContactState(gap), previous, updateSet, summary.violations);
     n.state->pressure = isActive(state) ? n.epsN * std::max(-gap, 0.0) / D : 0.0;
     n.state->lambdaN = -n.state->pressure / c_.k;
+    n.state->augmentedPressure = -n.epsN * gap / D;
     return state;
   }
 

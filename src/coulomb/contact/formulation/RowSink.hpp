@@ -48,6 +48,18 @@ private:
   GlobalOrdinal multiplierOffset_;
 };
 
+/// The forms with the multipliers as unknowns (SaddlePoint, LagrangeNcp):
+/// the forces of slave node `slave` (global `node`, Dirichlet components
+/// `prescribed`) on the bodies, slave k t D lambda, master -k t M_jl lambda,
+/// with lambda = (z / toUnknown) the node's multiplier: the displacement
+/// rows carry -f_c, the columns C = -df/dz, and K_c = -df/du through D and M
+/// when `withDerivatives` (entry then has them). The force counts in
+/// `summary` when `active`.
+void addMultiplierForces(RowSink& sink, int slave, long long node, const std::array<bool, 3>& prescribed,
+                         const NodalMortarEntry& entry, const std::array<double, 3>& lambda, double toLambda, double kt,
+                         bool withDerivatives, bool active, const std::array<double, 3>& normal,
+                         PairIterationSummary& summary);
+
 /// to += scale × from.
 inline void addScaled(DerivativeRow& to, const DerivativeRow& from, double scale) {
   if (scale == 0.0) return;

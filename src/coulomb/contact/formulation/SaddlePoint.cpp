@@ -27,7 +27,7 @@ public:
     // A node whose free components cannot carry its normal multiplier stays
     // open (CondensationFrame::usable), as in the condensed form.
     if (!usable(n)) {
-      n.state->lambdaN = n.state->pressure = 0.0;
+      n.state->lambdaN = n.state->pressure = n.state->augmentedPressure = 0.0;
       return ContactState::Inactive;
     }
     const auto lambda = multiplier(n);
@@ -38,6 +38,7 @@ public:
                   updateSet, summary.violations);
     n.state->lambdaN = isActive(state) ? lambdaN : 0.0;
     n.state->pressure = -c_.k * n.state->lambdaN;
+    n.state->augmentedPressure = -augmentedNormalMultiplier(lambdaN, n.mortar->gap, n.mortar->D, c_.k, n.epsN);
     return state;
   }
 
@@ -93,35 +94,11 @@ public:
     if (isActive(n.state->state))
       summary.normalResidual2 += (n.epsN * t * entry.gap) * (n.epsN * t * entry.gap);
 
-    // Forces on the bodies (NodalContactLaw): slave k t D lambda, master
-    // -k t M_jl lambda; the displacement rows carry r - f_c, the columns
-    // C = -df/dz, and K_c = -df/du through D and M (lambda is an unknown).
-    auto& contributions = sink.out;
-    const double kt = c_.k * t;
-    for (int c = 0; c < dim; ++c) {
-      const double force = kt * D * lambda[c];
-      if (isActive(n.state->state)) {
-        summary.slaveForce[c] += force;
-        summary.normalForce[c] += force;
-        summary.contactForce2 += force * force;
-      }
-      const GlobalOrdinal z = sink.multiplierDof(n.slave, c);
-      if (!n.prescribed[c]) {
-        const GlobalOrdinal row = sink.row(n.node, c);
-        contributions.contactResidual.push_back({row, -force});
-        out.columns.push_back({row, z, -kt * D * toLambda});
-        if (withDerivatives) sink.add(contributions.contactStiffness, row, entry.dD, -kt * lambda[c]);
-      }
-      for (const auto& [master, Mjl] : entry.M) {
-        if (sink.prescribed(master, c)) continue;
-        const GlobalOrdinal row = sink.row(master, c);
-        contributions.contactResidual.push_back({row, kt * Mjl * lambda[c]});
-        out.columns.push_back({row, z, kt * Mjl * toLambda});
-        if (!withDerivatives) continue;
-        const auto dM = entry.dM.find(master);
-        if (dM != entry.dM.end()) sink.add(contributions.contactStiffness, row, dM->second, kt * lambda[c]);
-      }
-    }
+    // Forces on the bodies (NodalContactLaw): slave k t D lambda, master -k t M_jl lambda.
+    std::array<double, 3> lambda3{};
+    for (int c = 0; c < dim; ++c) lambda3[c] = lambda[c];
+    addMultiplierForces(sink, n.slave, n.node, n.prescribed, entry, lambda3, toLambda, c_.k * t, withDerivatives,
+                        isActive(n.state->state), normal.n, summary);
   }
 
 private:

@@ -19,6 +19,13 @@ struct SlaveNodeState {
   double lambdaN = 0;   ///< normal multiplier lambda_n (traction / k, <= 0 in compression)
   double pressure = 0;  ///< contact pressure -k lambda_n (>= 0 in compression)
   std::array<double, 3> traction{};       ///< contact traction on the slave, k lambda (frictional pairs)
+  /// The augmented values the state rule judged (the seed's
+  /// AUGMENTED_NORMAL_CONTACT_PRESSURE and AUGMENTED_TANGENT_CONTACT_PRESSURE):
+  /// -lambdā_n = -(k lambda_n + eps_n g~ / D), >= 0 where the rule closes
+  /// the node (an open node: -eps_n × its gap); lambdā_tau (frictional pairs;
+  /// penalty: the trial traction t*). MPC: the reaction alone.
+  double augmentedPressure = 0;
+  std::array<double, 3> augmentedTraction{};
   std::array<double, 3> weightedSlip{};   ///< weighted slip of the step w (seed sign, 4.69b)
   std::array<double, 3> slipIncrement{};  ///< -w / D: the slip of the step, the slave relative to the master
   /// Unit slip direction of the node's slip rows at the last iterate (zero

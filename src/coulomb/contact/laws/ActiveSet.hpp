@@ -79,6 +79,14 @@ ContactState penaltyContactState(double weightedGap);
 /// any tangential load slips. Returns Active (= slip) or Stick.
 ContactState stickSlipState(double tangentNorm, double threshold, ContactState previous, double slipThreshold);
 
+/// @brief Slip Reset Frequency n (> 0): whether slipping nodes restart as
+/// stick in the sub-steps of deck step `deckStep` (1-based): steps 1, 1 + n,
+/// 1 + 2n, ... The count is the deck's load steps, so a cutback (or a load
+/// knot) that splits a step into sub-steps neither shifts the pattern nor
+/// adds resets: every sub-step of a reset step resets, no other does.
+/// n <= 0: never.
+inline bool resetsSlip(int frequency, int deckStep) { return frequency > 0 && (deckStep - 1) % frequency == 0; }
+
 /// @brief Per-interface summary of an active set.
 struct ActiveSetSummary {
   std::size_t nodes = 0;     ///< number of slave nodes

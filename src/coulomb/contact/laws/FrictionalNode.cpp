@@ -315,6 +315,8 @@ FrictionalNodeState<dim> frictionalState(const FrictionalNodeInput<dim>& in, Con
   const double stickAugmentation = p.multiPointConstraint ? 0.0 : 1.0;
   out.tangentNorm = augmentedTangent<dim, double>(
       terms, in.D, previous == ContactState::Slip ? p.slipAugmentation : stickAugmentation, p, directionO, directionU);
+  const auto direction = worldVector<dim, double>(terms, directionO, directionU);
+  for (int c = 0; c < dim; ++c) out.augmentedTangent[c] = out.tangentNorm * direction[c];
   // A node that closes (first time in the step, or again) has no recovered
   // traction: it is judged on its augmented values (lambda = 0) from the
   // stick side, |eps_tau w / D| against Θ(eps_n g~ / D): the node at the
@@ -468,6 +470,7 @@ PenaltyFrictionalForce<dim> penaltyFrictionalForce(const PenaltyFrictionalInput<
     const Fad f = p.thickness * D * (traction[c] - pressure * n[c]);
     out.force[c] = f.val();
     out.traction[c] = traction[c].val();
+    out.trial[c] = trial[c].val();
     for (int i = 0; i < N; ++i) out.dForce[c][i] = f.dx(i);
   }
   return out;

@@ -117,6 +117,7 @@ struct FrictionalNodeState {
   double augmentedNormal = 0.0;  ///< lambdā_n
   double threshold = 0.0;        ///< Θ(lambdā_n)
   double tangentNorm = 0.0;      ///< |lambdā_tau| used by the rule
+  std::array<double, dim> augmentedTangent{};  ///< lambdā_tau used by the rule (world components)
   std::array<double, dim> traction{};  ///< recovered contact traction on the slave, k lambda
 };
 
@@ -180,6 +181,7 @@ template <int dim>
 struct PenaltyFrictionalForce {
   std::array<double, dim> force{};      ///< force acting on the slave node
   std::array<double, dim> traction{};   ///< tangential traction t
+  std::array<double, dim> trial{};      ///< trial t* of the return map (the augmented tangential traction)
   double pressure = 0.0;                ///< p
   /// d force[c] / d input[i]; inputs ordered n, w, D, g~.
   std::array<std::array<double, kPenaltyFrictionalInputs<dim>>, dim> dForce{};

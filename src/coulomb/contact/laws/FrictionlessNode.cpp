@@ -25,6 +25,8 @@ FrictionlessNodeState<dim> frictionlessState(const FrictionlessNodeInput<dim>& i
   out.state = p.multiPointConstraint ? mpcContactState(isActive(previous), lambdaN, in.gap)
                                      : almContactState(lambdaN, in.gap, in.D, p.k, p.epsN, p.touchingGap);
   out.lambdaN = lambdaN;
+  out.augmentedNormal = p.multiPointConstraint ? p.k * lambdaN
+                                               : augmentedNormalMultiplier(lambdaN, in.gap, in.D, p.k, p.epsN);
   return out;
 }
 

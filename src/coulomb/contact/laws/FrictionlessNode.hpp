@@ -39,6 +39,9 @@ struct FrictionlessNodeState {
   /// Recovered (0 unless the node was active): the caller zeroes it when
   /// the node ends open (a frozen set may keep a node the rule opens).
   double lambdaN = 0.0;
+  /// lambdā_n = k lambda_n + eps_n g~ / D the rule judged (ALM, 4.73);
+  /// MPC: the reaction k lambda_n (no penalty).
+  double augmentedNormal = 0.0;
   CondensationFrame<dim> frame;
 };
 
