@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -124,6 +125,19 @@ double lastGlobal(const io::ExodusResults& r, const std::string& name) {
 }
 const std::vector<double>& lastNodal(const io::ExodusResults& r, const std::string& name) {
   return r.nodal.back()[r.nodalIndex(name)];
+}
+
+double nodalDifference(const io::ExodusResults& a, const io::ExodusResults& b, const std::string& field) {
+  double scale = 0, d = 0;
+  EXPECT_EQ(a.nodal.size(), b.nodal.size()) << field;
+  for (std::size_t s = 0; s < std::min(a.nodal.size(), b.nodal.size()); ++s) {
+    const auto &x = a.nodal[s][a.nodalIndex(field)], &y = b.nodal[s][b.nodalIndex(field)];
+    for (std::size_t i = 0; i < x.size(); ++i) {
+      scale = std::max(scale, std::abs(x[i]));
+      d = std::max(d, std::abs(x[i] - y[i]));
+    }
+  }
+  return scale > 0 ? d / scale : d;
 }
 
 }  // namespace coulomb::test

@@ -62,5 +62,8 @@ void writeGradedPatch2d(const std::string& path);
 
 double lastGlobal(const io::ExodusResults& r, const std::string& name);
 const std::vector<double>& lastNodal(const io::ExodusResults& r, const std::string& name);
+/// max |a - b| of nodal `field` over every step, relative to max |a| (a
+/// failed assertion if the step counts differ).
+double nodalDifference(const io::ExodusResults& a, const io::ExodusResults& b, const std::string& field);
 
 }  // namespace coulomb::test

@@ -174,6 +174,9 @@ void ContactPair::widenSearchRadius() {
 }
 
 void ContactPair::search() {
+  // Its own counter: the number of calls shows Search Every Iteration at work.
+  static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact search");
+  Teuchos::TimeMonitor scope(*timer);
   std::string failure;
   try {
     radius_ = std::max(defaultSearchRadius(*interface_, x_, settings_.searchRadiusFactor), widenedRadius_);

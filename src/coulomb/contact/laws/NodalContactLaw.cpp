@@ -70,39 +70,6 @@ AlmNodeResidual<dim> almResidual(const AlmNodeInput<dim>& in, const AlmParameter
 }
 
 template <int dim>
-ContactState almState(const AlmNodeInput<dim>& in, const AlmParameters& p) {
-  checkParameters(p);
-  return almContactState(dot<dim>(in.normal, in.lambda), in.gap, in.D, p.k, p.epsN);
-}
-
-template <int dim>
-double almPressure(const AlmNodeInput<dim>& in, const AlmParameters& p) {
-  return -p.k * dot<dim>(in.normal, in.lambda);
-}
-
-template <int dim>
-NodalForce<dim> almSlaveForce(const NVec<dim>& lambda, double D, double k) {
-  NodalForce<dim> out;
-  for (int i = 0; i < dim; ++i) {
-    out.f[i] = k * D * lambda[i];
-    out.dLambda[i][i] = k * D;
-    out.dD[i] = k * lambda[i];
-  }
-  return out;
-}
-
-template <int dim>
-NodalForce<dim> almMasterForce(const NVec<dim>& lambda, double Mjl, double k) {
-  NodalForce<dim> out;
-  for (int i = 0; i < dim; ++i) {
-    out.f[i] = -k * Mjl * lambda[i];
-    out.dLambda[i][i] = -k * Mjl;
-    out.dM[i] = -k * lambda[i];
-  }
-  return out;
-}
-
-template <int dim>
 NodalForce<dim> penaltySlaveForce(const NVec<dim>& normal, double gap, double epsN) {
   COULOMB_CHECK(epsN > 0.0, "contact penalty: normal penalty must be > 0, got " << epsN);
   NodalForce<dim> out;
@@ -143,10 +110,6 @@ double defaultPenalty(double E, double h, double factor) {
 
 #define COULOMB_NODAL_LAW_INSTANTIATE(DIM)                                                                      \
   template AlmNodeResidual<DIM> almResidual<DIM>(const AlmNodeInput<DIM>&, const AlmParameters&, ContactState); \
-  template ContactState almState<DIM>(const AlmNodeInput<DIM>&, const AlmParameters&);                          \
-  template double almPressure<DIM>(const AlmNodeInput<DIM>&, const AlmParameters&);                             \
-  template NodalForce<DIM> almSlaveForce<DIM>(const NVec<DIM>&, double, double);                                \
-  template NodalForce<DIM> almMasterForce<DIM>(const NVec<DIM>&, double, double);                               \
   template NodalForce<DIM> penaltySlaveForce<DIM>(const NVec<DIM>&, double, double);                            \
   template NodalForce<DIM> penaltyMasterForce<DIM>(const NVec<DIM>&, double, double, double, double);
 COULOMB_NODAL_LAW_INSTANTIATE(2)

@@ -99,31 +99,15 @@ struct AlmNodeResidual {
 template <int dim>
 AlmNodeResidual<dim> almResidual(const AlmNodeInput<dim>& in, const AlmParameters& p, ContactState state);
 
-/// @brief State from the update rule (ActiveSet.hpp) for these inputs.
-template <int dim>
-ContactState almState(const AlmNodeInput<dim>& in, const AlmParameters& p);
-
-/// @brief Contact pressure for output, p_j = -k n.lambda_j (>= 0 in compression).
-template <int dim>
-double almPressure(const AlmNodeInput<dim>& in, const AlmParameters& p);
-
-/// @brief A nodal force and its derivatives.
+/// @brief A penalty nodal force and its derivatives.
 template <int dim>
 struct NodalForce {
   NVec<dim> f{};          ///< force acting on the node's body
-  NMat<dim> dLambda{};    ///< d f_i / d lambda_c (ALM) — zero for penalty
-  NMat<dim> dNormal{};    ///< d f_i / d n_c (penalty) — zero for ALM
-  NVec<dim> dGap{};       ///< d f_i / d g~ (penalty) — zero for ALM
+  NMat<dim> dNormal{};    ///< d f_i / d n_c
+  NVec<dim> dGap{};       ///< d f_i / d g~
   NVec<dim> dD{};         ///< d f_i / d D_j
   NVec<dim> dM{};         ///< d f_i / d M_jl (master forces)
 };
-
-/// @brief ALM (4.72a) slave force f_j = k D_j lambda_j.
-template <int dim>
-NodalForce<dim> almSlaveForce(const NVec<dim>& lambda, double D, double k);
-/// @brief ALM (4.72a) master force at node l from slave node j: f_l = -k M_jl lambda_j.
-template <int dim>
-NodalForce<dim> almMasterForce(const NVec<dim>& lambda, double Mjl, double k);
 
 /// @brief Penalty (4.71a) slave force f_j = -eps_n <-g~_j> n_j.
 template <int dim>
@@ -144,10 +128,6 @@ double defaultPenalty(double E, double h, double factor = 1.0);
 #define COULOMB_NODAL_LAW_EXTERN(DIM)                                                                        \
   extern template AlmNodeResidual<DIM> almResidual<DIM>(const AlmNodeInput<DIM>&, const AlmParameters&,     \
                                                         ContactState);                                       \
-  extern template ContactState almState<DIM>(const AlmNodeInput<DIM>&, const AlmParameters&);                \
-  extern template double almPressure<DIM>(const AlmNodeInput<DIM>&, const AlmParameters&);                   \
-  extern template NodalForce<DIM> almSlaveForce<DIM>(const NVec<DIM>&, double, double);                      \
-  extern template NodalForce<DIM> almMasterForce<DIM>(const NVec<DIM>&, double, double);                     \
   extern template NodalForce<DIM> penaltySlaveForce<DIM>(const NVec<DIM>&, double, double);                  \
   extern template NodalForce<DIM> penaltyMasterForce<DIM>(const NVec<DIM>&, double, double, double, double);
 COULOMB_NODAL_LAW_EXTERN(2)
