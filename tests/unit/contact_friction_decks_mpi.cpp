@@ -450,6 +450,35 @@ TEST(FrictionFrameIndifference, ObjectiveSlipKeepsTheContactUnderRigidRotation) 
   EXPECT_GT(n.slip, 1e-7);
 }
 
+// `Rotation Angle` 0 given in a deck is a rotation by 0: the node set
+// keeps the displacement the earlier conditions prescribe (here the press
+// of `top`). Before, an angle of 0 made the condition a plain one with
+// Value 0 on all components: `top` fixed, the press lost, and the nearly
+// unloaded step never converged. Two pressing steps of
+// xml/frame_indifference_2d, the turn function on from the start.
+TEST(DirichletRotation, ZeroAngleKeepsThePrescribedDisplacement) {
+  const auto pressing = [](const std::string& name, bool zeroAngle) {
+    ShippedDeck deck("frame_indifference_2d", "hertz2d.e");
+    deck.replace("<Parameter name=\"Number of Steps\" type=\"int\" value=\"13\"/><Parameter name=\"Final Time\" "
+                 "type=\"double\" value=\"13\"/>",
+                 "<Parameter name=\"Number of Steps\" type=\"int\" value=\"2\"/><Parameter name=\"Final Time\" "
+                 "type=\"double\" value=\"2\"/>");
+    if (zeroAngle) {
+      deck.replace("value=\"{0, 0, 1}\"", "value=\"{0, 1, 1}\"");  // the turn function
+      for (int k = 0; k < 2; ++k)
+        deck.replace("<Parameter name=\"Rotation Angle\" type=\"double\" value=\"0.5235987755982988\"/>",
+                     "<Parameter name=\"Rotation Angle\" type=\"double\" value=\"0\"/>");
+    }
+    return runDeckText(name, deck.text);
+  };
+  auto plain = pressing("rotation_angle_none", false);
+  auto zero = pressing("rotation_angle_zero", true);
+  EXPECT_EQ(zero.summary.cutbacks, 0);
+  if (worldComm()->getRank() != 0) return;
+  for (const char* field : {"displacement_x", "displacement_y", "contact_pressure"})
+    EXPECT_LT(nodalDifference(plain.results, zero.results, field), 1e-12) << field;
+}
+
 // Sliding punch (the peer benchmark's friction case, coarse shipped mesh):
 // Q/P grows while the contact sticks, slip spreads (the stick zone only
 // shrinks, through partial slip), and in gross slip Q = mu P within 1 %.

@@ -19,7 +19,7 @@ DirichletConstraints::DirichletConstraints(const mesh::Mesh& mesh, const DofMap&
     for (long long node : set.nodes) {
       const int local = mesh.localNode(node);
       if (local < 0) continue;
-      if (c.rotationAngle != 0.0) {
+      if (c.rotation) {
         // Rotate what the earlier conditions prescribe on this node (all components).
         NodeRotation r;
         r.rotation = &c;

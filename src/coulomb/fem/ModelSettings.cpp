@@ -165,7 +165,10 @@ ModelSettings parseModelSettings(const ParameterList& deck, int dimension) {
     }
     c.function = lookupFunction(deck, io::valueOrDefault<std::string>(d, validD, "Function"), where);
     c.rotationAngle = io::valueOrDefault<double>(d, validD, "Rotation Angle");
-    if (c.rotationAngle != 0.0) {
+    // A given angle, even 0, makes a rotation: read as a plain condition,
+    // `Rotation Angle` 0 would fix the node set (Value 0, all components).
+    c.rotation = d.isParameter("Rotation Angle");
+    if (c.rotation) {
       COULOMB_REQUIRE(component < 0, "deck: '" << where << "/Rotation Angle' needs 'Component' = 'all'");
       COULOMB_REQUIRE(!d.isParameter("Value") && !d.isParameter("Linear Coefficients"),
                       "deck: '" << where << "/Rotation Angle' rotates the displacements of the conditions before it: "

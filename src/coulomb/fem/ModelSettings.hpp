@@ -26,10 +26,11 @@ struct DirichletCondition {
   double value = 0.0;                      ///< constant part [length]
   std::vector<double> linearCoefficients;  ///< optional gradient part (empty = none)
   TimeFunction function = TimeFunction::ramp();
-  /// Rigid rotation (rotationAngle != 0, all components): the node set turns
+  /// Rigid rotation (the deck gives a Rotation Angle, even 0: all components): the node set turns
   /// by rotationAngle × f(t) about rotationCenter (axis rotationAxis in 3D,
   /// z in 2D), carrying the displacement the conditions listed before this
   /// one prescribe on its nodes: u = R (X + v - C) + C - X.
+  bool rotation = false;
   double rotationAngle = 0.0;
   std::array<double, 3> rotationCenter{};
   std::array<double, 3> rotationAxis{0.0, 0.0, 1.0};
