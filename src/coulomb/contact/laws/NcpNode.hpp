@@ -73,7 +73,8 @@ struct NcpNodeRows {
   std::array<double, dim> augmentedTangent{};  ///< a
 };
 
-/// @brief The rows of the branch `state` (from ncpState), with derivatives (Sacado).
+/// @brief The rows of the branch `state` (from ncpState), with derivatives
+/// (Sacado). Throws InternalError for the parameters ncpState rejects.
 template <int dim>
 NcpNodeRows<dim> ncpRows(const NcpNodeInput<dim>& in, ContactState state, const NcpParameters& p);
 
