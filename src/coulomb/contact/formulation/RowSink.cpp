@@ -59,4 +59,12 @@ void addMultiplierForces(RowSink& sink, int slave, long long node, const std::ar
   if (active) summary.addSlaveForce(force, normalPart);
 }
 
+void addVanishingMultiplier(RowSink& sink, int slave, const std::array<double, 3>& z, int dim, double scale) {
+  auto& out = sink.out.multipliers;
+  for (int c = 0; c < dim; ++c) {
+    out.rows.push_back({sink.multiplierDof(slave, c), sink.multiplierDof(slave, c), scale});
+    out.residual.push_back({sink.multiplierDof(slave, c), scale * z[c]});
+  }
+}
+
 }  // namespace coulomb::contact

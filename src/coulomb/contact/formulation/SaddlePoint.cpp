@@ -46,8 +46,7 @@ public:
   /// open ones still carrying a multiplier (n, D).
   bool needsDerivatives(const SlaveNode& n) const override {
     if (!usable(n)) return false;
-    const auto& z = n.multiplier;
-    return isActive(n.state->state) || z[0] != 0.0 || z[1] != 0.0 || z[2] != 0.0;
+    return isActive(n.state->state) || carriesMultiplier(n.multiplier);
   }
 
   void emit(const SlaveNode& n, RowSink& sink, PairIterationSummary& summary) const override {
@@ -55,11 +54,7 @@ public:
     const double t = c_.thickness;
     if (!usable(n)) {
       // No master in reach (or not usable): the multiplier vanishes, R = t eps_n h^(dim-1) z.
-      const double scale = t * n.epsN * c_.referenceD;
-      for (int c = 0; c < dim; ++c) {
-        out.rows.push_back({sink.multiplierDof(n.slave, c), sink.multiplierDof(n.slave, c), scale});
-        out.residual.push_back({sink.multiplierDof(n.slave, c), scale * n.multiplier[c]});
-      }
+      addVanishingMultiplier(sink, n.slave, n.multiplier, dim, t * n.epsN * c_.referenceD);
       return;
     }
     const bool withDerivatives = n.mortarDerivative != nullptr;
