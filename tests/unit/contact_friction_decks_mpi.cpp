@@ -134,6 +134,34 @@ TEST(FrictionPatch, ImposedSlipCarriesMuTimesPressure) {
   EXPECT_NEAR(lastGlobal(run.results, "reaction_top_x"), -Q, 1e-8 * kPressure);  // momentum balance
 }
 
+// Translation without rotation: the objective slip (4.69b) and the
+// non-objective one (4.65a) are the same measure of the imposed slip, at
+// every node — also at the node x = 6/7 whose support leaves the base's
+// master faces during the slide. There the rate form counts the moving
+// edge of the overlap as slip (measured before the coverage rule of
+// ContactPairSlip.cpp: 2.84e-3 against 1.94e-3); with it the objective
+// measure falls back to the non-objective one where the support is partly
+// off the master (measured: equal to 1e-4 relative at every node).
+TEST(FrictionPatch, ObjectiveSlipEqualsTheNonObjectiveOnAnImposedSlip) {
+  ShippedDeck deck("friction_patch_2d", "contact_patch2d.e");
+  deck.replace("<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0.3\"/>",
+               "<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0.3\"/><Parameter name=\"Slip "
+               "Measure\" type=\"string\" value=\"Non-Objective\"/>");
+  auto objective = runDeck("friction_patch_2d");
+  auto nonObjective = runDeckText("friction_patch_non_objective", deck.text);
+  if (worldComm()->getRank() != 0) return;
+  const auto& a = lastNodal(objective.results, "contact_slip_x");
+  const auto& b = lastNodal(nonObjective.results, "contact_slip_x");
+  const auto& state = lastNodal(objective.results, "contact_state");
+  int slipping = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (state[i] < 0.5) continue;
+    ++slipping;
+    EXPECT_NEAR(a[i], b[i], 1e-3 * kImposedSlip) << "node " << i + 1;
+  }
+  EXPECT_EQ(slipping, 8);
+}
+
 // Imposed slip on matching meshes (every punch node starts on a base node)
 // carries mu p per node as on the non-matching ones; with mu = 0 the same
 // slip carries no tangential traction at all (pure slip, automatic).
@@ -448,6 +476,57 @@ TEST(FrictionFrameIndifference, ObjectiveSlipKeepsTheContactUnderRigidRotation) 
   // The non-objective measure sees the rotation as slip.
   EXPECT_GT(n.traction, 1e-6 * n.peakPressure);
   EXPECT_GT(n.slip, 1e-7);
+}
+
+// The objective slip from the first load step (issue 16): the operators of
+// the initial configuration are the D^t, M^t of step 1. The first two steps
+// of xml/frame_indifference_2d's press, once with both bodies turned
+// rigidly by 5 degrees while they are pressed and once by 0: the contact is
+// the same up to the rotation, node by node. Measured: 4e-10 p0 in pressure
+// and traction; with the non-objective measure in step 1 (the rule before)
+// the traction of the turned run was off by 58 of 154 MPa.
+TEST(FrictionFrameIndifference, ObjectiveSlipFromTheFirstStep) {
+  const auto pressing = [](const std::string& name, const char* angle) {
+    ShippedDeck deck("frame_indifference_2d", "hertz2d.e");
+    deck.replace("<Parameter name=\"Number of Steps\" type=\"int\" value=\"13\"/><Parameter name=\"Final Time\" "
+                 "type=\"double\" value=\"13\"/>",
+                 "<Parameter name=\"Number of Steps\" type=\"int\" value=\"2\"/><Parameter name=\"Final Time\" "
+                 "type=\"double\" value=\"2\"/>");
+    deck.replace("<Parameter name=\"Times\" type=\"Array(double)\" value=\"{0, 5, 13}\"/><Parameter "
+                 "name=\"Values\" type=\"Array(double)\" value=\"{0, 0, 1}\"/>",
+                 "<Parameter name=\"Times\" type=\"Array(double)\" value=\"{0, 2, 13}\"/><Parameter "
+                 "name=\"Values\" type=\"Array(double)\" value=\"{0, 1, 1}\"/>");
+    for (int k = 0; k < 2; ++k)
+      deck.replace("<Parameter name=\"Rotation Angle\" type=\"double\" value=\"0.5235987755982988\"/>",
+                   std::string("<Parameter name=\"Rotation Angle\" type=\"double\" value=\"") + angle + "\"/>");
+    return runDeckText(name, deck.text);
+  };
+  auto still = pressing("first_step_still", "0");
+  auto turned = pressing("first_step_turned", "0.08726646259971647");
+  EXPECT_EQ(still.summary.cutbacks, 0);
+  EXPECT_EQ(turned.summary.cutbacks, 0);
+  if (worldComm()->getRank() != 0) return;
+  const auto& a = still.results;
+  const auto& b = turned.results;
+  ASSERT_EQ(a.times.size(), b.times.size());
+  for (std::size_t s = 0; s < a.times.size(); ++s) {
+    auto nodal = [s](const auto& r, const char* name) { return r.nodal[s][r.nodalIndex(name)]; };
+    const auto pa = nodal(a, "contact_pressure"), pb = nodal(b, "contact_pressure");
+    const auto txa = nodal(a, "contact_tangential_traction_x"), tya = nodal(a, "contact_tangential_traction_y");
+    const auto txb = nodal(b, "contact_tangential_traction_x"), tyb = nodal(b, "contact_tangential_traction_y");
+    double peak = 0, pressure = 0, traction = 0, tractionPeak = 0;
+    for (std::size_t i = 0; i < pa.size(); ++i) {
+      peak = std::max(peak, pa[i]);
+      tractionPeak = std::max(tractionPeak, std::hypot(txa[i], tya[i]));
+      pressure = std::max(pressure, std::abs(pa[i] - pb[i]));
+      traction = std::max(traction, std::abs(std::hypot(txa[i], tya[i]) - std::hypot(txb[i], tyb[i])));
+    }
+    std::printf("step %zu: p0 %.4g, peak traction %.4g, turned against still: pressure %.2e, traction %.2e\n", s,
+                peak, tractionPeak, pressure, traction);
+    EXPECT_GT(tractionPeak, 0.02 * peak) << "step " << s;  // friction at work (measured 0.04 to 0.07)
+    EXPECT_LT(pressure, 1e-8 * peak) << "step " << s;
+    EXPECT_LT(traction, 1e-8 * peak) << "step " << s;
+  }
 }
 
 // `Rotation Angle` 0 given in a deck is a rotation by 0: the node set

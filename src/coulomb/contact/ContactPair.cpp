@@ -116,6 +116,12 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
   nodes_.assign(owned, SlaveNodeState{});
   accumulatedSlip_.assign(owned, {0.0, 0.0, 0.0});
   lastStepSlip_ = accumulatedSlip_;
+  // The objective slip (4.69b) of the first step needs D^t, M^t of the
+  // initial configuration: integrated here, beginStep(1) keeps them.
+  if (frictional() && settings_.slipMeasure == SlipMeasure::Objective) {
+    x_ = referenceConfiguration(*interface_);
+    integrateCurrentConfiguration();
+  }
   beginStep(1);
 }
 
@@ -212,6 +218,10 @@ void ContactPair::searchAndIntegrate(const Vector& u) {
   static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact search and mortar values");
   Teuchos::TimeMonitor scope(*timer);
   x_ = gather_->gather(u);
+  integrateCurrentConfiguration();
+}
+
+void ContactPair::integrateCurrentConfiguration() {
   std::string failure;
   NodalMortarQuantities local;
   if (!searched_ || settings_.searchEveryIteration) {

@@ -110,6 +110,8 @@ private:
   /// nodes lie inside the master beyond it (SearchResult::unpairedDepth).
   void search();
   void searchAndIntegrate(const Vector& u);
+  /// searchAndIntegrate at x_ (the search when due, the normals, D, M, g~).
+  void integrateCurrentConfiguration();
   /// The derivative pass for the owned slave nodes flagged (ownedSlaveNodes() order).
   void differentiate(const std::vector<char>& ownedFlags);
   /// The one loop over the owned slave nodes (after searchAndIntegrate):

@@ -241,6 +241,22 @@ NodalMortarQuantities integrateMortarPass(const ContactInterface& contact, const
   return result;
 }
 
+double nodalSupportMeasure(const ContactInterface& contact, const InterfaceConfiguration& x, int slaveNode) {
+  const auto& offset = contact.slaveNodeFaceOffsets();
+  double measure = 0.0;
+  for (int k = offset[slaveNode]; k < offset[slaveNode + 1]; ++k) {
+    const ContactFace& f = contact.slaveFaces()[contact.slaveNodeFaces()[k]];
+    const int corner = contact.slaveNodeFaceCorners()[k];
+    if (f.type == FaceType::Line2)
+      measure += faceMass<FaceType::Line2, double>(faceCoordinates<FaceType::Line2>(f, x)).De[corner];
+    else if (f.type == FaceType::Tri3)
+      measure += faceMass<FaceType::Tri3, double>(faceCoordinates<FaceType::Tri3>(f, x)).De[corner];
+    else
+      measure += faceMass<FaceType::Quad4, double>(faceCoordinates<FaceType::Quad4>(f, x)).De[corner];
+  }
+  return measure;
+}
+
 // ------------------------------------------------------------ summation
 
 namespace {
