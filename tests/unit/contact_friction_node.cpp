@@ -82,6 +82,70 @@ void checkDerivatives(const FrictionalNodeInput<dim>& base, ContactState state, 
 
 }  // namespace
 
+// The penalty return map (penaltyFrictionalForce), with friction and, as the
+// frictionless penalty runs it, with no law on the slip branch: the force on
+// the slave is t D (t_tau - p n) with p = eps_n <-g~> / D, continuous (zero)
+// at g~ = 0, no tangential part without a law; derivatives against central
+// differences in every input (n, w, D, g~).
+template <int dim>
+void checkPenaltyForce(const FrictionalParameters& p, ContactState state) {
+  const auto node = genericNode<dim>();
+  PenaltyFrictionalInput<dim> base;
+  base.normal = node.normal;
+  base.slip = node.slip;
+  base.D = node.D;
+  base.gap = node.gap;
+  for (int c = 0; c < dim; ++c) base.oldTraction[c] = 0.1 * (c + 1);
+  const auto exact = penaltyFrictionalForce<dim>(base, state, p);
+  EXPECT_NEAR(exact.pressure, p.epsN * 0.01 / node.D, 1e-12);
+  double along = 0;
+  for (int c = 0; c < dim; ++c) along += exact.force[c] * node.normal[c];
+  EXPECT_NEAR(along, -p.thickness * node.D * exact.pressure, 1e-12);
+  if (p.law.type == FrictionLawType::None)
+    for (int c = 0; c < dim; ++c) EXPECT_NEAR(exact.force[c], along * node.normal[c], 1e-14);
+  const double h = 1e-7;
+  for (int i = 0; i < kPenaltyFrictionalInputs<dim>; ++i) {
+    auto perturbed = [&](double delta) {
+      PenaltyFrictionalInput<dim> in = base;
+      if (i < dim) in.normal[i] += delta;
+      else if (i < 2 * dim) in.slip[i - dim] += delta;
+      else if (i == 2 * dim) in.D += delta;
+      else in.gap += delta;
+      return penaltyFrictionalForce<dim>(in, state, p);
+    };
+    const auto plus = perturbed(h), minus = perturbed(-h);
+    for (int c = 0; c < dim; ++c)
+      EXPECT_NEAR(exact.dForce[c][i], (plus.force[c] - minus.force[c]) / (2 * h), 1e-6 * (1 + std::abs(exact.dForce[c][i])))
+          << "force " << c << " input " << i;
+  }
+  for (double gap : {-1e-12, 0.0, 1e-12}) {
+    base.gap = gap;
+    const auto f = penaltyFrictionalForce<dim>(base, ContactState::Slip, p);
+    double tangential = 0;
+    for (int c = 0; c < dim; ++c) tangential = std::max(tangential, std::abs(f.force[c]));
+    EXPECT_LE(tangential, p.epsN * 1e-11) << "gap " << gap;  // no pressure, no friction threshold
+  }
+}
+
+TEST(PenaltyFrictionalForce, ReturnMapDerivativesMatchCentralDifferences) {
+  FrictionalParameters frictionless = coulombParameters(0.0);
+  frictionless.law = FrictionLaw{};
+  frictionless.pureSlip = true;
+  checkPenaltyForce<2>(frictionless, ContactState::Slip);
+  checkPenaltyForce<3>(frictionless, ContactState::Slip);
+  checkPenaltyForce<2>(coulombParameters(0.3), ContactState::Slip);
+  checkPenaltyForce<3>(coulombParameters(0.3), ContactState::Slip);
+  checkPenaltyForce<2>(coulombParameters(0.3), ContactState::Stick);
+  checkPenaltyForce<3>(coulombParameters(0.3), ContactState::Stick);
+  PenaltyFrictionalInput<2> open;
+  open.normal = {0.0, -1.0};
+  open.D = 0.4;
+  open.gap = 1e-3;
+  EXPECT_EQ(penaltyFrictionalState<2>(open, ContactState::Slip, frictionless), ContactState::Inactive);
+  open.gap = 0.0;  // touching counts as closed, on the slip branch without a law
+  EXPECT_EQ(penaltyFrictionalState<2>(open, ContactState::Inactive, frictionless), ContactState::Slip);
+}
+
 TEST(FrictionLaw, CoulombTrescaNone) {
   FrictionLaw coulomb{FrictionLawType::Coulomb, 0.3, 0.0};
   EXPECT_DOUBLE_EQ(frictionThreshold(coulomb, -10.0), 3.0);  // mu <-lambdā_n>

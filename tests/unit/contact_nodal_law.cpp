@@ -270,71 +270,8 @@ TEST(ActiveSetSummary, CountsChangesPrintsAndCompares) {
 }
 
 // ---------------------------------------------------------------------------
-// Forces
+// Default penalty
 // ---------------------------------------------------------------------------
-
-TEST(NodalLawForces, PenaltyOnMatchingInterfaceConservesMomentumAndPushesApart) {
-  const NVec<3> n = unitNormal<3>();
-  const double D = 0.6;
-  // A penetrating node, M_jj = D_j.
-  const double g = -0.01, eps = 1e3;
-  const auto ps = penaltySlaveForce<3>(n, g, eps);
-  const auto pm = penaltyMasterForce<3>(n, g, D, D, eps);
-  for (int i = 0; i < 3; ++i) EXPECT_NEAR(ps.f[i] + pm.f[i], 0.0, 1e-13);
-  EXPECT_NEAR(dotv<3>(ps.f, n), -eps * 0.01, 1e-12);
-  EXPECT_GT(dotv<3>(pm.f, n), 0.0);
-}
-
-TEST(NodalLawPenalty, ContinuousAtZeroGapAndDerivativesMatchFiniteDifferences) {
-  const NVec<2> n = unitNormal<2>();
-  const double eps = 50.0, D = 0.9, M = 0.4, h = 1e-7;
-  // Continuity at g~ = 0: zero force from both sides.
-  for (double g : {-1e-12, 0.0, 1e-12}) {
-    const auto s = penaltySlaveForce<2>(n, g, eps);
-    const auto m = penaltyMasterForce<2>(n, g, D, M, eps);
-    for (int i = 0; i < 2; ++i) {
-      EXPECT_LE(std::abs(s.f[i]), eps * 1e-12);
-      EXPECT_LE(std::abs(m.f[i]), eps * 1e-12);
-    }
-  }
-  for (double g : {-0.3, -0.01, 0.02, 0.5}) {
-    const auto s = penaltySlaveForce<2>(n, g, eps);
-    const auto m = penaltyMasterForce<2>(n, g, D, M, eps);
-    auto rel = [](double fd, double a) { return std::abs(fd - a) / std::max(1.0, std::abs(a)); };
-    for (int i = 0; i < 2; ++i) {
-      const double fds = (penaltySlaveForce<2>(n, g + h, eps).f[i] - penaltySlaveForce<2>(n, g - h, eps).f[i]) /
-                         (2 * h);
-      const double fdm =
-          (penaltyMasterForce<2>(n, g + h, D, M, eps).f[i] - penaltyMasterForce<2>(n, g - h, D, M, eps).f[i]) /
-          (2 * h);
-      EXPECT_LT(rel(fds, s.dGap[i]), 1e-7) << "g " << g;
-      EXPECT_LT(rel(fdm, m.dGap[i]), 1e-7) << "g " << g;
-      const double fdD =
-          (penaltyMasterForce<2>(n, g, D + h, M, eps).f[i] - penaltyMasterForce<2>(n, g, D - h, M, eps).f[i]) /
-          (2 * h);
-      const double fdM =
-          (penaltyMasterForce<2>(n, g, D, M + h, eps).f[i] - penaltyMasterForce<2>(n, g, D, M - h, eps).f[i]) /
-          (2 * h);
-      EXPECT_LT(rel(fdD, m.dD[i]), 1e-7) << "g " << g;
-      EXPECT_LT(rel(fdM, m.dM[i]), 1e-7) << "g " << g;
-      for (int c = 0; c < 2; ++c) {
-        NVec<2> np = n, nm = n;
-        np[c] += h;
-        nm[c] -= h;
-        const double fdn = (penaltySlaveForce<2>(np, g, eps).f[i] - penaltySlaveForce<2>(nm, g, eps).f[i]) / (2 * h);
-        const double fdnm =
-            (penaltyMasterForce<2>(np, g, D, M, eps).f[i] - penaltyMasterForce<2>(nm, g, D, M, eps).f[i]) / (2 * h);
-        EXPECT_LT(rel(fdn, s.dNormal[i][c]), 1e-7) << "g " << g;
-        EXPECT_LT(rel(fdnm, m.dNormal[i][c]), 1e-7) << "g " << g;
-      }
-    }
-    // Open gap: no force at all.
-    if (g > 0) {
-      EXPECT_EQ(s.f[0], 0.0);
-      EXPECT_EQ(s.f[1], 0.0);
-    }
-  }
-}
 
 TEST(NodalLawPenalty, DefaultPenaltyIsEOverH) {
   EXPECT_DOUBLE_EQ(defaultPenalty(210e9, 0.01), 210e11);

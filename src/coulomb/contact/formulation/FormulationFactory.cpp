@@ -18,9 +18,8 @@ std::unique_ptr<Formulation> make(const PairConstants& constants, ContactSystemF
                   "the saddle-point form is for ALM frictionless pairs");
     return makeSaddlePoint<dim>(constants);
   }
-  const bool penalty = s.formulation == ContactFormulation::Penalty;
-  if (s.frictional()) return penalty ? makePenaltyFrictional<dim>(constants) : makeAlmFrictional<dim>(constants);
-  return penalty ? makePenaltyFrictionless<dim>(constants) : makeAlmFrictionless<dim>(constants);
+  if (s.formulation == ContactFormulation::Penalty) return makePenalty<dim>(constants);
+  return s.frictional() ? makeAlmFrictional<dim>(constants) : makeAlmFrictionless<dim>(constants);
 }
 
 }  // namespace

@@ -12,15 +12,12 @@ namespace coulomb::contact {
 /// ALM and MPC, frictionless, condensed (AlmFrictionless.cpp).
 template <int dim>
 std::unique_ptr<Formulation> makeAlmFrictionless(const PairConstants& constants);
-/// Penalty, frictionless (PenaltyFrictionless.cpp).
-template <int dim>
-std::unique_ptr<Formulation> makePenaltyFrictionless(const PairConstants& constants);
 /// ALM and MPC with friction, condensed (AlmFrictional.cpp).
 template <int dim>
 std::unique_ptr<Formulation> makeAlmFrictional(const PairConstants& constants);
-/// Penalty with friction (PenaltyFrictional.cpp).
+/// Penalty, with or without friction (Penalty.cpp).
 template <int dim>
-std::unique_ptr<Formulation> makePenaltyFrictional(const PairConstants& constants);
+std::unique_ptr<Formulation> makePenalty(const PairConstants& constants);
 /// ALM frictionless with the multipliers as unknowns (SaddlePoint.cpp).
 template <int dim>
 std::unique_ptr<Formulation> makeSaddlePoint(const PairConstants& constants);

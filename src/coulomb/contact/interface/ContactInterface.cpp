@@ -129,8 +129,6 @@ ContactInterface::ContactInterface(const mesh::Mesh& mesh, const std::string& sl
       ownedSlaveFaces_.push_back(static_cast<int>(k));
       for (int a = 0; a < slaveFaces_[k].numNodes; ++a) nodeOfOwnedFace[indexIn(slaveNodes_, slaveFaces_[k].nodes[a])] = 1;
     }
-  for (std::size_t k = 0; k < masterFaces_.size(); ++k)
-    if (masterFaces_[k].owner == rank) ownedMasterFaces_.push_back(static_cast<int>(k));
   for (std::size_t i = 0; i < numSlaveNodes; ++i) {
     if (mesh.nodeOwner(slaveNodes_[i]) == rank) ownedSlaveNodes_.push_back(static_cast<int>(i));
     if (nodeOfOwnedFace[i]) slaveNodesOfOwnedFaces_.push_back(static_cast<int>(i));

@@ -55,7 +55,6 @@ public:
   int dimension() const { return dimension_; }
   const Teuchos::RCP<const Teuchos::Comm<int>>& comm() const { return comm_; }
   const std::string& slaveSetName() const { return slaveName_; }
-  const std::string& masterSetName() const { return masterName_; }
 
   /// All slave / master faces (identical on every rank), in side-set order
   /// with duplicates removed.
@@ -67,7 +66,7 @@ public:
   /// Index in slaveNodes() of a global node, or -1 if it is no slave node.
   int slaveNodeIndex(long long globalNode) const;
   /// For slave node i: indices of the slave faces containing it (CSR:
-  /// facesOfSlaveNode()[offset[i] .. offset[i+1])), and the corner of the node
+  /// slaveNodeFaces()[offset[i] .. offset[i+1])), and the corner of the node
   /// in each of these faces (same positions).
   const std::vector<int>& slaveNodeFaceOffsets() const { return nodeFaceOffset_; }
   const std::vector<int>& slaveNodeFaces() const { return nodeFaces_; }
@@ -82,8 +81,6 @@ public:
 
   /// Indices into slaveFaces() of the faces whose element this rank owns (increasing).
   const std::vector<int>& ownedSlaveFaces() const { return ownedSlaveFaces_; }
-  /// Indices into masterFaces() of the faces whose element this rank owns (increasing).
-  const std::vector<int>& ownedMasterFaces() const { return ownedMasterFaces_; }
   /// Indices into slaveNodes() of the slave nodes this rank owns (increasing).
   const std::vector<int>& ownedSlaveNodes() const { return ownedSlaveNodes_; }
   /// Indices into slaveNodes() of the nodes of the owned slave faces
@@ -98,7 +95,7 @@ private:
   std::vector<long long> slaveNodes_, interfaceNodes_;
   std::vector<int> nodeFaceOffset_, nodeFaces_, nodeFaceCorner_;
   std::vector<double> referenceCoordinates_;
-  std::vector<int> ownedSlaveFaces_, ownedMasterFaces_, ownedSlaveNodes_, slaveNodesOfOwnedFaces_;
+  std::vector<int> ownedSlaveFaces_, ownedSlaveNodes_, slaveNodesOfOwnedFaces_;
 };
 
 /// @brief Coordinates of the interface nodes (ContactInterface::interfaceNodes(),

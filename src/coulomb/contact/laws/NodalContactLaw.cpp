@@ -69,38 +69,6 @@ AlmNodeResidual<dim> almResidual(const AlmNodeInput<dim>& in, const AlmParameter
   return out;
 }
 
-template <int dim>
-NodalForce<dim> penaltySlaveForce(const NVec<dim>& normal, double gap, double epsN) {
-  COULOMB_CHECK(epsN > 0.0, "contact penalty: normal penalty must be > 0, got " << epsN);
-  NodalForce<dim> out;
-  const double pen = std::max(-gap, 0.0);        // <-g~>
-  const double h = gap < 0.0 ? 1.0 : 0.0;        // -d<-g~>/dg~ (taken 0 at g~ = 0)
-  for (int i = 0; i < dim; ++i) {
-    out.f[i] = -epsN * pen * normal[i];
-    out.dGap[i] = epsN * h * normal[i];
-    out.dNormal[i][i] = -epsN * pen;
-  }
-  return out;
-}
-
-template <int dim>
-NodalForce<dim> penaltyMasterForce(const NVec<dim>& normal, double gap, double D, double Mjl, double epsN) {
-  COULOMB_CHECK(epsN > 0.0, "contact penalty: normal penalty must be > 0, got " << epsN);
-  COULOMB_CHECK(D > 0.0, "contact penalty: nodal mortar weight D_j must be > 0, got " << D);
-  NodalForce<dim> out;
-  const double pen = std::max(-gap, 0.0);
-  const double h = gap < 0.0 ? 1.0 : 0.0;
-  const double ratio = Mjl / D;
-  for (int i = 0; i < dim; ++i) {
-    out.f[i] = epsN * pen * ratio * normal[i];
-    out.dGap[i] = -epsN * h * ratio * normal[i];
-    out.dNormal[i][i] = epsN * pen * ratio;
-    out.dD[i] = -epsN * pen * ratio / D * normal[i];
-    out.dM[i] = epsN * pen / D * normal[i];
-  }
-  return out;
-}
-
 double defaultPenalty(double E, double h, double factor) {
   COULOMB_CHECK(E > 0.0, "contact penalty: Young's modulus must be > 0, got " << E);
   COULOMB_CHECK(h > 0.0, "contact penalty: element size must be > 0, got " << h);
@@ -109,9 +77,7 @@ double defaultPenalty(double E, double h, double factor) {
 }
 
 #define COULOMB_NODAL_LAW_INSTANTIATE(DIM)                                                                      \
-  template AlmNodeResidual<DIM> almResidual<DIM>(const AlmNodeInput<DIM>&, const AlmParameters&, ContactState); \
-  template NodalForce<DIM> penaltySlaveForce<DIM>(const NVec<DIM>&, double, double);                            \
-  template NodalForce<DIM> penaltyMasterForce<DIM>(const NVec<DIM>&, double, double, double, double);
+  template AlmNodeResidual<DIM> almResidual<DIM>(const AlmNodeInput<DIM>&, const AlmParameters&, ContactState);
 COULOMB_NODAL_LAW_INSTANTIATE(2)
 COULOMB_NODAL_LAW_INSTANTIATE(3)
 #undef COULOMB_NODAL_LAW_INSTANTIATE

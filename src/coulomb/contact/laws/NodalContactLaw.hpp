@@ -2,8 +2,8 @@
 /// @file NodalContactLaw.hpp
 /// @brief Nodal kernels of frictionless contact for one slave node j: the ALM
 /// multiplier residual of the "components" formulation (vector multiplier,
-/// seed 4.72a/b with mu = 0), the contact forces on the displacement rows, the
-/// penalty forces (seed 4.71a, frictionless part), and their derivatives.
+/// seed 4.72a/b with mu = 0), the contact forces on the displacement rows, and
+/// their derivatives (the penalty forces: FrictionalNode.hpp's return map).
 /// Small fixed-size kernels, dim = 2 or 3; no Tpetra, no MPI.
 ///
 /// Units and signs (see also ActiveSet.hpp):
@@ -49,12 +49,6 @@
 /// from the functional: with r_u = f_int - f_ext - f, the lambda-columns of the
 /// displacement rows are -k D_j I (slave) and +k M_jl I (master).
 ///
-/// Penalty (4.71a, frictionless): Active when g~_j <= 0 (4.74); pressure
-/// p_j = eps_n <-g~_j> / D_j (<x> = max(x, 0)), forces acting on the bodies:
-///   slave  : f_j = -eps_n <-g~_j> n_j,
-///   master : f_l = +eps_n <-g~_j> (M_jl / D_j) n_j,
-/// i.e. minus the derivative of eps_n <-g~>^2 / (2 D_j) with g~ = n.(M x^2 - D x^1)
-/// (n, D, M frozen). Continuous (zero) at g~ = 0; derivative jumps there.
 #include <array>
 
 #include "coulomb/contact/laws/ActiveSet.hpp"
@@ -99,23 +93,6 @@ struct AlmNodeResidual {
 template <int dim>
 AlmNodeResidual<dim> almResidual(const AlmNodeInput<dim>& in, const AlmParameters& p, ContactState state);
 
-/// @brief A penalty nodal force and its derivatives.
-template <int dim>
-struct NodalForce {
-  NVec<dim> f{};          ///< force acting on the node's body
-  NMat<dim> dNormal{};    ///< d f_i / d n_c
-  NVec<dim> dGap{};       ///< d f_i / d g~
-  NVec<dim> dD{};         ///< d f_i / d D_j
-  NVec<dim> dM{};         ///< d f_i / d M_jl (master forces)
-};
-
-/// @brief Penalty (4.71a) slave force f_j = -eps_n <-g~_j> n_j.
-template <int dim>
-NodalForce<dim> penaltySlaveForce(const NVec<dim>& normal, double gap, double epsN);
-/// @brief Penalty (4.71a) master force f_l = eps_n <-g~_j> (M_jl / D_j) n_j. Requires D > 0.
-template <int dim>
-NodalForce<dim> penaltyMasterForce(const NVec<dim>& normal, double gap, double D, double Mjl, double epsN);
-
 /// @brief Default normal penalty eps_n = factor × E / h (pressure / length).
 /// Reason: E/h is the stiffness per unit area of a layer of the body one element
 /// (h) thick, so the penetration under a contact pressure p is about (p/E) h, a
@@ -127,9 +104,7 @@ double defaultPenalty(double E, double h, double factor = 1.0);
 
 #define COULOMB_NODAL_LAW_EXTERN(DIM)                                                                        \
   extern template AlmNodeResidual<DIM> almResidual<DIM>(const AlmNodeInput<DIM>&, const AlmParameters&,     \
-                                                        ContactState);                                       \
-  extern template NodalForce<DIM> penaltySlaveForce<DIM>(const NVec<DIM>&, double, double);                  \
-  extern template NodalForce<DIM> penaltyMasterForce<DIM>(const NVec<DIM>&, double, double, double, double);
+                                                        ContactState);
 COULOMB_NODAL_LAW_EXTERN(2)
 COULOMB_NODAL_LAW_EXTERN(3)
 #undef COULOMB_NODAL_LAW_EXTERN

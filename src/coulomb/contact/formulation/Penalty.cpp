@@ -1,7 +1,9 @@
-/// @file PenaltyFrictional.cpp
-/// @brief Penalty with friction (4.71a with a return map, FrictionalNode.hpp):
-/// the force f of the node's traction on the slave (residual -f,
-/// K_c = -df/dx through n, w, D, g~) and -(M_jl / D) f on the masters.
+/// @file Penalty.cpp
+/// @brief Penalty, with friction (4.71a with a return map, FrictionalNode.hpp)
+/// or without (the same kernel on its slip branch with a zero threshold: no
+/// tangential traction, no slip needed): the force f of the node's traction
+/// on the slave (residual -f, K_c = -df/dx through n, w, D, g~) and
+/// -(M_jl / D) f on the masters.
 #include "coulomb/contact/formulation/FrictionParameters.hpp"
 #include "coulomb/contact/laws/FrictionalNode.hpp"
 #include "coulomb/contact/formulation/Formulations.hpp"
@@ -11,11 +13,15 @@ namespace coulomb::contact {
 namespace {
 
 template <int dim>
-class PenaltyFrictional final : public Formulation {
+class Penalty final : public Formulation {
 public:
-  explicit PenaltyFrictional(const PairConstants& c) : c_(c), p_(pairFrictionalParameters(c)) {}
+  explicit Penalty(const PairConstants& c)
+      : c_(c), p_(pairFrictionalParameters(c)), frictional_(c.settings->frictional()) {
+    // Frictionless: every active node on the slip branch, whose threshold is 0.
+    if (!frictional_) p_.law = FrictionLaw{}, p_.pureSlip = true;
+  }
 
-  bool usesSlip() const override { return true; }
+  bool usesSlip() const override { return frictional_; }
 
   ContactState decide(const SlaveNode& n, ContactState previous, bool updateSet,
                       PairIterationSummary& summary) const override {
@@ -33,7 +39,6 @@ public:
     if (!isActive(n.state->state) || n.mortarDerivative == nullptr) return;
     const NodalMortarEntry& entry = *n.mortarDerivative;
     const NodalNormal& normal = *n.normalDerivative;
-    const auto& dw = *n.slipDerivative;
     const auto& nv = normal.n;
     const double D = entry.D;
     const auto f = penaltyFrictionalForce<dim>(input(n, entry, normal), n.state->state, parameters(n));
@@ -53,7 +58,8 @@ public:
       std::array<double, dim> alongNormal{};
       for (int m = 0; m < dim; ++m) alongNormal[m] = f.dForce[c][m];
       addNormalDerivative(row, normal, alongNormal);
-      for (int m = 0; m < dim; ++m) addScaled(row, dw[m], f.dForce[c][dim + m]);
+      if (n.slipDerivative)
+        for (int m = 0; m < dim; ++m) addScaled(row, (*n.slipDerivative)[m], f.dForce[c][dim + m]);
       addScaled(row, entry.dD, f.dForce[c][2 * dim]);
       addScaled(row, entry.dGap, f.dForce[c][2 * dim + 1]);
       return row;
@@ -99,15 +105,16 @@ private:
 
   PairConstants c_;
   FrictionalParameters p_;
+  bool frictional_;
 };
 
 }  // namespace
 
 template <int dim>
-std::unique_ptr<Formulation> makePenaltyFrictional(const PairConstants& constants) {
-  return std::make_unique<PenaltyFrictional<dim>>(constants);
+std::unique_ptr<Formulation> makePenalty(const PairConstants& constants) {
+  return std::make_unique<Penalty<dim>>(constants);
 }
-template std::unique_ptr<Formulation> makePenaltyFrictional<2>(const PairConstants&);
-template std::unique_ptr<Formulation> makePenaltyFrictional<3>(const PairConstants&);
+template std::unique_ptr<Formulation> makePenalty<2>(const PairConstants&);
+template std::unique_ptr<Formulation> makePenalty<3>(const PairConstants&);
 
 }  // namespace coulomb::contact
