@@ -36,6 +36,11 @@ endfunction()
 
 # Deck syntax and validation.
 coulomb_bad_input(malformed_xml "malformed_xml[.]xml.*not a valid" NP 1 2)
+coulomb_bad_input(deck_not_a_number "'Materials/steel/Young's Modulus' = 'abc' is not a number" NP 1 2)
+coulomb_bad_input(deck_nan "'Materials/steel/Poisson's Ratio' = 'nan' is not a finite number" NP 1 2)
+coulomb_bad_input(deck_duplicate_parameter "'Materials/steel/Young's Modulus' is given twice" NP 1 2)
+coulomb_bad_input(deck_empty "deck_empty[.]xml' is empty" NP 1 2)
+coulomb_bad_input(deck_json "deck_json[.]xml' is not a valid.*looks like JSON" NP 1 2)
 coulomb_bad_input(unknown_parameter_young_modulus "'Materials/steel/Young Modulus'" NP 1 2)
 coulomb_bad_input(wrong_type_number_of_steps "'Load Stepping/Number of Steps'.*type.*int")
 coulomb_bad_input(negative_youngs_modulus "'Materials/steel/Young's Modulus'")

@@ -1,13 +1,17 @@
 #include "coulomb/io/ParameterValidation.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include <Teuchos_FileInputSource.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
-#include <Teuchos_XMLParameterListCoreHelpers.hpp>
+#include <Teuchos_XMLParameterListReader.hpp>
 
 #include "coulomb/core/Error.hpp"
+#include "coulomb/io/DeckValueCheck.hpp"
 #include "coulomb/io/RangeValidator.hpp"
 
 namespace coulomb::io {
@@ -76,15 +80,32 @@ std::string joinPath(const std::string& path, const std::string& name) {
 }
 
 Teuchos::RCP<Teuchos::ParameterList> readXmlDeck(const std::string& path) {
+  std::error_code ignored;
+  COULOMB_REQUIRE(!std::filesystem::is_directory(path, ignored),
+                  "deck file '" << path << "' is a directory, not an XML deck");
   std::ifstream probe(path);
   COULOMB_REQUIRE(probe.good(), "deck file '" << path << "' cannot be opened");
+  char first = ' ';
+  while (probe.get(first) && std::isspace(static_cast<unsigned char>(first))) {
+  }
+  COULOMB_REQUIRE(probe.good(), "deck file '" << path << "' is empty");
+  Teuchos::XMLObject xml;
   try {
-    return Teuchos::getParametersFromXmlFile(path);
+    xml = Teuchos::FileInputSource(path).getObject();
   } catch (const std::exception& e) {
     // Keep the parser's own sentence ("XML parse error at line 47: ..."), not Teuchos' throw banner.
     std::string reason = oneLine(e.what());
     if (const auto pos = reason.find("XML parse error"); pos != std::string::npos) reason = reason.substr(pos);
+    if (first == '{' || first == '[') reason += " (it looks like JSON; Coulomb reads Teuchos XML decks)";
     throw Error("deck file '" + path + "' is not a valid Teuchos XML parameter list: " + reason);
+  }
+  COULOMB_REQUIRE(xml.getTag() == "ParameterList", "deck file '" << path << "' is XML, but its root element is <"
+                                                                  << xml.getTag() << ">, not <ParameterList>");
+  checkXmlDeckValues(xml);
+  try {
+    return Teuchos::rcp(new Teuchos::ParameterList(Teuchos::XMLParameterListReader().toParameterList(xml)));
+  } catch (const std::exception& e) {
+    throw Error("deck file '" + path + "' is not a valid Teuchos XML parameter list: " + oneLine(e.what()));
   }
 }
 

@@ -1,0 +1,22 @@
+#pragma once
+/// @file DeckValueCheck.hpp
+/// @brief The literal values of a Teuchos XML deck, checked before Teuchos
+/// converts them. Teuchos reads a number through an istringstream and keeps
+/// 0 for text that is none ("abc" became a Friction Coefficient of 0: a
+/// frictionless run without a word), takes "nan" and "inf" as numbers, and
+/// of a parameter given twice in one list keeps one silently. Each of these
+/// is a one-line coulomb::Error naming the parameter by its path in the deck.
+
+namespace Teuchos {
+class XMLObject;
+}
+
+namespace coulomb::io {
+
+/// @brief Checks every Parameter element below `root` (a ParameterList
+/// element): values of type int, double, float, bool and their arrays are
+/// finite numbers (or true/false) with nothing left over, and no name occurs
+/// twice in one list. Throws coulomb::Error.
+void checkXmlDeckValues(const Teuchos::XMLObject& root);
+
+}  // namespace coulomb::io
