@@ -9,6 +9,7 @@
 #include <Tpetra_Core.hpp>
 
 #include "coulomb/core/Error.hpp"
+#include "coulomb/core/Interrupt.hpp"
 #include "coulomb/solver/Deck.hpp"
 #include "coulomb/solver/Simulation.hpp"
 
@@ -32,6 +33,9 @@ std::string oneLine(std::string message) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // SIGINT/SIGTERM stop the run cleanly (converged steps kept, exit 1); a
+  // second one ends it at once. First of all: a signal during start-up too.
+  coulomb::installInterruptHandlers();
   Tpetra::ScopeGuard tpetra(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;

@@ -23,6 +23,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "coulomb/contact/ContactModel.hpp"
+#include "coulomb/core/Interrupt.hpp"
 #include "coulomb/core/Parallel.hpp"
 
 namespace coulomb::solver {
@@ -216,6 +217,26 @@ private:
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
+/// Fails the solve when some rank received SIGINT/SIGTERM (core/Interrupt.hpp):
+/// the step is abandoned, the simulation stops with the converged steps.
+class InterruptTest : public NOX::StatusTest::Generic {
+public:
+  explicit InterruptTest(Teuchos::RCP<const Teuchos::Comm<int>> comm) : comm_(std::move(comm)) {}
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic&, NOX::StatusTest::CheckType) override {
+    status_ = interruptSignalOnAnyRank(*comm_) != 0 ? NOX::StatusTest::Failed : NOX::StatusTest::Unconverged;
+    return status_;
+  }
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& stream, int indent) const override {
+    for (int i = 0; i < indent; ++i) stream << ' ';
+    return stream << status_ << " interrupt\n";
+  }
+
+private:
+  Teuchos::RCP<const Teuchos::Comm<int>> comm_;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+};
+
 /// Records one table row per iteration and prints it on rank 0.
 class IterationTable : public NOX::Observer {
 public:
@@ -383,6 +404,7 @@ NewtonReport NewtonSolver::solve(Vector& u) {
   tests->addStatusTest(converged);
   tests->addStatusTest(Teuchos::rcp(new MaxIters(settings_.maximumIterations)));
   if (contact_) tests->addStatusTest(Teuchos::rcp(new ActiveSetCycleTest(*contact_)));
+  tests->addStatusTest(Teuchos::rcp(new InterruptTest(u.getMap()->getComm())));
 
   NewtonReport report;
   auto parameters = Teuchos::rcp(new Teuchos::ParameterList(*noxParameters_));

@@ -61,12 +61,16 @@ void ResultWriter::writeStep(double time, const std::vector<NodalField>& fields,
   throwIfAnyRankFailed(*mesh_.comm(), failure);
 }
 
-void ResultWriter::finish() {
+void ResultWriter::finish() { close(true); }
+
+void ResultWriter::abandon() { close(false); }
+
+void ResultWriter::close(bool complete) {
   std::string failure;
   if (writer_) {
     try {
       writer_->close();
-      COULOMB_REQUIRE(std::rename(partialPath(path_).c_str(), path_.c_str()) == 0,
+      COULOMB_REQUIRE(!complete || std::rename(partialPath(path_).c_str(), path_.c_str()) == 0,
                       "output: cannot rename '" << partialPath(path_) << "' to '" << path_ << "'");
     } catch (const std::exception& e) {
       failure = e.what();

@@ -37,10 +37,15 @@ public:
   void writeStep(double time, const std::vector<NodalField>& fields, const std::vector<double>& globals);
   /// Collective: closes and renames "<path>.part" to `path`.
   void finish();
+  /// Collective: closes "<path>.part" and keeps it under that name (a run
+  /// stopped before its end: the file holds the steps written so far).
+  void abandon();
 
   static std::string partialPath(const std::string& path) { return path + ".part"; }
 
 private:
+  void close(bool complete);
+
   std::string path_;
   const mesh::Mesh& mesh_;
   Teuchos::RCP<const Map> rootNodeMap_;

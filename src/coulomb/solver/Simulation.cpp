@@ -13,6 +13,7 @@
 #include "coulomb/contact/ContactModel.hpp"
 #include "coulomb/contact/ContactSettings.hpp"
 #include "coulomb/core/Error.hpp"
+#include "coulomb/core/Interrupt.hpp"
 #include "coulomb/fem/Assembler.hpp"
 #include "coulomb/fem/DofMap.hpp"
 #include "coulomb/fem/ModelSettings.hpp"
@@ -222,8 +223,22 @@ RunSummary Simulation::run() {
   Vector lastIncrement(dofs_->ownedMap());
   double lastStep = 0.0;
   std::string rejected;  // since the last converged step: the last rejected iterate, or why Newton stopped
+  // SIGINT/SIGTERM (core/Interrupt.hpp): asked before each step and after
+  // each solve; the Newton iterations stop at the signal (NewtonSolver.cpp).
+  auto stopIfInterrupted = [&](double time, double next) {
+    const int signal = interruptSignalOnAnyRank(*comm_);
+    if (signal == 0) return;
+    solvers_->writer->abandon();
+    const std::string kept = summary.steps == 0 ? std::string("no step yet")
+                                                : "the " + std::to_string(summary.steps) +
+                                                      " converged steps up to t = " + std::to_string(time);
+    COULOMB_REQUIRE(false, "interrupted by " << signalName(signal) << " during the step to t = " << next
+                               << ": stopped; the result file keeps " << kept << " as "
+                               << ResultWriter::partialPath(settings_.outputFile));
+  };
   while (!steps.finished()) {
     const double time = steps.time(), next = steps.nextTime();
+    stopIfInterrupted(time, next);
     if (console_)
       *console_ << "step " << summary.steps + 1 << "  t = " << std::setprecision(6) << next << "  (dt = " << next - time
                 << ", deck step " << steps.nominalStep() << " of " << settings_.numberOfSteps << ")\n";
@@ -248,6 +263,7 @@ RunSummary Simulation::run() {
       if (contact_) contact_->restoreStep();
       report = attempt(false);
     }
+    stopIfInterrupted(time, next);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - stepStart).count();
     const int iterations = static_cast<int>(report.iterations.size()) - 1;
     if (!report.converged) {
