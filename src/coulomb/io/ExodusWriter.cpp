@@ -10,6 +10,8 @@
 #include <exodusII.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <filesystem>
 #include <cstdint>
 #include <set>
 #include <utility>
@@ -178,7 +180,17 @@ ExodusWriter& ExodusWriter::operator=(ExodusWriter&& other) noexcept {
 }
 
 void ExodusWriter::check(int status, const std::string& what) const {
-  COULOMB_REQUIRE(status >= 0, "exodus output '" << path_ << "': " << what << " failed (" << lastExodusError() << ")");
+  if (status >= 0) return;
+  const int error = errno;
+  // The library's message does not say why a write failed; a full disk is the common cause.
+  std::string cause;
+  std::error_code ignored;
+  const auto parent = std::filesystem::absolute(path_, ignored).parent_path();
+  const auto space = std::filesystem::space(parent, ignored);
+  if (error == ENOSPC || (!ignored && space.available < (1u << 20)))
+    cause = "; the disk holding it is full (" + std::to_string(space.available / 1024) + " KiB free)";
+  COULOMB_REQUIRE(false, "exodus output '" << path_ << "': " << what << " failed (" << lastExodusError() << ")"
+                                           << cause);
 }
 
 void ExodusWriter::writeMesh(const mesh::GlobalMesh& mesh, const std::string& title) {

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <iomanip>
+#include <sstream>
 #include <set>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -154,7 +155,15 @@ void Simulation::writeStep(double time, const std::vector<double>& stepGlobals) 
     for (double value : reactionTotal(set)) globals.push_back(value);
   if (contact_)
     for (double value : contact_->globals()) globals.push_back(value);
-  solvers_->writer->writeStep(time, fields, globals);
+  try {
+    solvers_->writer->writeStep(time, fields, globals);
+  } catch (const Error& e) {
+    // Every rank has the same error (ResultWriter::writeStep agrees on it).
+    std::ostringstream message;
+    message << e.what() << "; the result file keeps the steps written before t = " << time << " as "
+            << ResultWriter::partialPath(settings_.outputFile);
+    throw Error(message.str());
+  }
 }
 
 void Simulation::reportContact(RunSummary& summary) {
@@ -229,11 +238,11 @@ RunSummary Simulation::run() {
     const int signal = interruptSignalOnAnyRank(*comm_);
     if (signal == 0) return;
     solvers_->writer->abandon();
-    const std::string kept = summary.steps == 0 ? std::string("no step yet")
-                                                : "the " + std::to_string(summary.steps) +
-                                                      " converged steps up to t = " + std::to_string(time);
+    std::ostringstream kept;
+    if (summary.steps == 0) kept << "no step yet";
+    else kept << "the " << summary.steps << " converged steps up to t = " << time;
     COULOMB_REQUIRE(false, "interrupted by " << signalName(signal) << " during the step to t = " << next
-                               << ": stopped; the result file keeps " << kept << " as "
+                               << ": stopped; the result file keeps " << kept.str() << " as "
                                << ResultWriter::partialPath(settings_.outputFile));
   };
   while (!steps.finished()) {
