@@ -10,6 +10,7 @@
 
 #include "coulomb/core/Error.hpp"
 #include "coulomb/core/Interrupt.hpp"
+#include "coulomb/core/UserMessage.hpp"
 #include "coulomb/solver/Deck.hpp"
 #include "coulomb/solver/Simulation.hpp"
 
@@ -21,13 +22,6 @@ void usage(std::ostream& out) {
          "                                    next to the deck; -o overrides it; --mesh replaces Mesh/File)\n"
          "       coulomb --help-deck         list every deck parameter (type, default, doc)\n"
          "       mpirun -np N coulomb DECK.xml\n";
-}
-
-/// A message on one console line.
-std::string oneLine(std::string message) {
-  for (auto& c : message)
-    if (c == '\n') c = ' ';
-  return message;
 }
 
 }  // namespace
@@ -66,17 +60,18 @@ int main(int argc, char** argv) {
     simulation.run();
   } catch (const coulomb::Error& e) {
     // Every rank throws the same coulomb::Error (see core/Parallel.hpp); one prints it.
-    if (root) std::cerr << "coulomb: error: " << e.what() << std::endl;
+    if (root) std::cerr << "coulomb: error: " << coulomb::userMessage(e.what()) << std::endl;
     return 1;
   } catch (const coulomb::InternalError& e) {
     // A broken invariant: a bug, on this rank alone perhaps, so abort all.
     std::cerr << "coulomb: internal error (a bug in Coulomb, please report it with the deck) on rank "
-              << comm->getRank() << ": " << oneLine(e.what()) << std::endl;
+              << comm->getRank() << ": " << coulomb::userMessage(e.what()) << std::endl;
     MPI_Abort(MPI_COMM_WORLD, 3);
   } catch (const std::exception& e) {
     // Neither an input problem Coulomb detected nor one of its checks (a
     // library's exception, memory): a rank may be alone here, so abort all.
-    std::cerr << "coulomb: unexpected error on rank " << comm->getRank() << ": " << oneLine(e.what()) << std::endl;
+    std::cerr << "coulomb: unexpected error on rank " << comm->getRank() << ": " << coulomb::userMessage(e.what())
+              << std::endl;
     MPI_Abort(MPI_COMM_WORLD, 3);
   }
   return 0;

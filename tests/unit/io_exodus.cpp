@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -263,6 +264,23 @@ TEST(ExodusIo, NonExodusFileNamesThePath) {
   const std::string path = outputPath("not_exodus.e");
   { std::ofstream(path) << "this is not a netCDF file\n"; }
   expectErrorContaining([&] { coulomb::io::readExodus(path); }, {path, "Exodus"});
+}
+
+// A mesh file cut short (a copy interrupted, a full disk): netCDF reads the
+// missing data as zeros, so the first block refers to node 0; the message
+// says the file is truncated, not that the numbering is wrong.
+TEST(ExodusIo, TruncatedFileIsNamedAsSuch) {
+  const std::string source = std::string(COULOMB_SOURCE_DIR) + "/exodus_meshes/block3d.e";
+  const std::string path = outputPath("truncated.e");
+  std::string bytes;
+  {
+    std::ifstream in(source, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  ASSERT_GT(bytes.size(), 1000u);
+  { std::ofstream(path, std::ios::binary) << bytes.substr(0, bytes.size() / 2); }
+  expectErrorContaining([&] { coulomb::io::readExodus(path); }, {path, "refers to node 0", "truncated"});
+  EXPECT_EQ(coulomb::io::readExodus(source).numNodes(), 729);  // the whole file reads
 }
 
 TEST(ExodusIo, UnsupportedElementTypeNamesTheBlock) {

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <vector>
 
@@ -147,13 +148,29 @@ private:
               "reading the connectivity of " + label);
       }
       for (long long& node : block.connectivity) {
-        COULOMB_REQUIRE(node >= 1 && node <= numNodes, "mesh '" << path_ << "': " << label << " refers to node " << node
-                                                                << " but the file has " << numNodes << " nodes");
+        checkNodeReference(label, node, numNodes);
         --node;
       }
       firstElement += param.num_entry;
       mesh_.blocks.push_back(std::move(block));
     }
+  }
+
+  /// A node number of a block or set. 0 is no node of any Exodus file (they
+  /// start at 1): it is what netCDF returns for data beyond the end of a cut
+  /// file, so the message says so instead of blaming the numbering.
+  void checkNodeReference(const std::string& label, long long node, long long numNodes) const {
+    COULOMB_REQUIRE(node != 0, "mesh '" << path_ << "': " << label
+                                        << " refers to node 0 (Exodus node numbers start at 1): the file is truncated "
+                                           "or damaged (is it complete? it holds "
+                                        << fileSize() << " bytes)");
+    COULOMB_REQUIRE(node >= 1 && node <= numNodes, "mesh '" << path_ << "': " << label << " refers to node " << node
+                                                            << " but the file has " << numNodes << " nodes");
+  }
+  std::uintmax_t fileSize() const {
+    std::error_code ignored;
+    const auto size = std::filesystem::file_size(path_, ignored);
+    return ignored ? 0 : size;
   }
 
   void readNodeSets(int64_t count) {
@@ -173,8 +190,7 @@ private:
         check(ex_get_set(file_.id, EX_NODE_SET, setIds[s], set.nodes.data(), nullptr), "reading " + label);
       }
       for (long long& node : set.nodes) {
-        COULOMB_REQUIRE(node >= 1 && node <= numNodes, "mesh '" << path_ << "': " << label << " refers to node " << node
-                                                                << " but the file has " << numNodes << " nodes");
+        checkNodeReference(label, node, numNodes);
         --node;
       }
       mesh_.nodeSets.push_back(std::move(set));

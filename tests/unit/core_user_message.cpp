@@ -1,0 +1,37 @@
+/// Unit tests of coulomb::userMessage (core/UserMessage.hpp): Teuchos'
+/// throw banner (a Trilinos source path, the throw number and the tested
+/// expression) is removed, the user's text kept on one line.
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+#include <Teuchos_TestForException.hpp>
+
+#include "coulomb/core/UserMessage.hpp"
+
+namespace {
+
+std::string teuchosMessage() {
+  try {
+    const bool empty = true;
+    TEUCHOS_TEST_FOR_EXCEPTION(empty, std::runtime_error, "Error, An empty XML std::string or file was specified!");
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(UserMessage, TeuchosThrowBannerIsRemoved) {
+  const std::string raw = teuchosMessage();
+  ASSERT_NE(raw.find("Throw test that evaluated to true"), std::string::npos) << raw;  // the banner is there
+  const std::string plain = coulomb::userMessage("deck file 'a.xml' is wrong: " + raw);
+  EXPECT_EQ(plain, "deck file 'a.xml' is wrong: Error, An empty XML std::string or file was specified!");
+}
+
+TEST(UserMessage, OneLineAndOtherTextUnchanged) {
+  EXPECT_EQ(coulomb::userMessage("mesh 'a.e':\n  node 3\tis   missing \n"), "mesh 'a.e': node 3 is missing");
+  EXPECT_EQ(coulomb::userMessage("t = 1: 2 steps"), "t = 1: 2 steps");
+}
