@@ -12,6 +12,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include "coulomb/core/Error.hpp"
+#include "coulomb/io/DeckValueCheck.hpp"
 #include "coulomb/io/ParameterValidation.hpp"
 
 namespace {
@@ -104,4 +105,26 @@ TEST(DeckValues, WhatIsGivenAsADeckIsNamed) {
   // Teuchos' source paths never reach the user.
   for (const std::string& m : {message(dir), message(write("empty2.xml", "")), message(write("bad.xml", "<a"))})
     EXPECT_EQ(m.find("packages/teuchos"), std::string::npos) << m;
+}
+
+// Teuchos' reader recurses per nesting level (10 000 levels crashed it) and
+// holds ~25 bytes per deck byte: the raw text is checked first.
+TEST(DeckValues, DeepOrHugeDecksAreRefusedBeforeParsing) {
+  auto nested = [](int levels) {
+    std::string text;
+    for (int k = 0; k < levels; ++k) text += "<ParameterList name=\"l" + std::to_string(k) + "\">";
+    for (int k = 0; k < levels; ++k) text += "</ParameterList>";
+    return text;
+  };
+  EXPECT_EQ(errorOf(nested(coulomb::io::kMaxDeckDepth)), "");
+  EXPECT_NE(errorOf(nested(coulomb::io::kMaxDeckDepth + 1)).find("nest deeper than 64 levels"), std::string::npos);
+  EXPECT_NE(errorOf(nested(10000)).find("nest deeper than 64 levels"), std::string::npos);
+  // Comments, declarations and quoted '>' do not count as levels.
+  EXPECT_EQ(errorOf("<?xml version=\"1.0\"?><!-- <a><b><c> -->" +
+                    deck("string", "a > b", "<Parameter name=\"x\" type=\"string\" value='>'/>")),
+            "");
+  std::string huge = "<ParameterList name=\"Coulomb\">";
+  while (huge.size() <= coulomb::io::kMaxDeckBytes) huge += "<!-- padding padding padding padding padding -->\n";
+  huge += "</ParameterList>";
+  EXPECT_NE(errorOf(huge).find("larger than 4 MiB"), std::string::npos);
 }

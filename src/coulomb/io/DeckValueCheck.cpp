@@ -2,11 +2,13 @@
 /// @brief checkXmlDeckValues (DeckValueCheck.hpp).
 #include "coulomb/io/DeckValueCheck.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <climits>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <set>
 #include <string>
 #include <vector>
@@ -107,5 +109,49 @@ void checkList(const Teuchos::XMLObject& list, const std::string& path) {
 }  // namespace
 
 void checkXmlDeckValues(const Teuchos::XMLObject& root) { checkList(root, ""); }
+
+void checkXmlDeckShape(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string text(kMaxDeckBytes + 1, '\0');
+  in.read(&text[0], static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<std::size_t>(in.gcount()));
+  COULOMB_REQUIRE(text.size() <= kMaxDeckBytes, "deck file '" << path << "' is larger than " << (kMaxDeckBytes >> 20)
+                                                               << " MiB: a deck holds parameters (fields and tables "
+                                                                  "belong in the mesh file)");
+  int depth = 0, line = 1;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\n') ++line;
+    if (text[i] != '<') continue;
+    if (text.compare(i, 4, "<!--") == 0) {  // a comment: to its end
+      const std::size_t end = text.find("-->", i + 4);
+      for (std::size_t k = i; k < std::min(end, text.size()); ++k) line += text[k] == '\n';
+      if (end == std::string::npos) break;
+      i = end + 2;
+      continue;
+    }
+    const bool closing = i + 1 < text.size() && text[i + 1] == '/';
+    const bool special = i + 1 < text.size() && (text[i + 1] == '?' || text[i + 1] == '!');
+    // The end of the tag, past quoted attribute values (which may hold '>').
+    std::size_t k = i + 1;
+    char quote = 0;
+    for (; k < text.size(); ++k) {
+      if (text[k] == '\n') ++line;
+      if (quote) {
+        if (text[k] == quote) quote = 0;
+      } else if (text[k] == '"' || text[k] == '\'') {
+        quote = text[k];
+      } else if (text[k] == '>') {
+        break;
+      }
+    }
+    if (k >= text.size()) break;  // an unterminated tag: the parser says where
+    const bool selfClosing = text[k - 1] == '/';
+    if (closing) --depth;
+    else if (!special && !selfClosing) ++depth;
+    COULOMB_REQUIRE(depth <= kMaxDeckDepth, "deck file '" << path << "': lists nest deeper than " << kMaxDeckDepth
+                                                           << " levels at line " << line);
+    i = k;
+  }
+}
 
 }  // namespace coulomb::io

@@ -89,6 +89,7 @@ Teuchos::RCP<Teuchos::ParameterList> readXmlDeck(const std::string& path) {
   while (probe.get(first) && std::isspace(static_cast<unsigned char>(first))) {
   }
   COULOMB_REQUIRE(probe.good(), "deck file '" << path << "' is empty");
+  checkXmlDeckShape(path);
   Teuchos::XMLObject xml;
   try {
     xml = Teuchos::FileInputSource(path).getObject();
