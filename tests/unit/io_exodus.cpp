@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -281,6 +282,18 @@ TEST(ExodusIo, TruncatedFileIsNamedAsSuch) {
   { std::ofstream(path, std::ios::binary) << bytes.substr(0, bytes.size() / 2); }
   expectErrorContaining([&] { coulomb::io::readExodus(path); }, {path, "refers to node 0", "truncated"});
   EXPECT_EQ(coulomb::io::readExodus(source).numNodes(), 729);  // the whole file reads
+}
+
+// A node at NaN or infinity (a broken mesh export) is named, not carried
+// into the assembly.
+TEST(ExodusIo, NonFiniteCoordinateNamesTheNode) {
+  for (const double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    const std::string path = outputPath("non_finite.e");
+    GlobalMesh mesh = twoHexMesh();
+    mesh.coordinates[3 * 4 + 1] = bad;  // node 5, y
+    { coulomb::io::ExodusWriter writer(path, mesh, {}, {}); }
+    expectErrorContaining([&] { coulomb::io::readExodus(path); }, {path, "node 5", "not a finite number", "y = "});
+  }
 }
 
 TEST(ExodusIo, UnsupportedElementTypeNamesTheBlock) {

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -115,6 +116,10 @@ private:
       mesh_.coordinates[d * i] = x[i];
       mesh_.coordinates[d * i + 1] = y[i];
       if (d == 3) mesh_.coordinates[d * i + 2] = z[i];
+      for (int c = 0; c < d; ++c)
+        COULOMB_REQUIRE(std::isfinite(mesh_.coordinates[d * i + c]),
+                        "mesh '" << path_ << "': node " << i + 1 << " has a coordinate that is not a finite number ("
+                                 << "xyz"[c] << " = " << mesh_.coordinates[d * i + c] << ")");
     }
   }
 
