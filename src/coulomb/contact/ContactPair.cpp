@@ -133,6 +133,9 @@ void ContactPair::beginStep(int deckStep) {
   // operators and coordinates are the D^t, M^t, x^t of the slip (4.69).
   stepStartMortar_ = mortar_;
   stepStartX_ = x_.x.empty() ? referenceConfiguration(*interface_) : x_;
+  stepStartCovered_.clear();
+  if (settings_.slipMeasure == SlipMeasure::Objective)
+    for (const auto& entry : stepStartMortar_.entries) stepStartCovered_.push_back(coveredByMaster(entry, stepStartX_));
   // The direction of Slip Reset Frequency < 0: the converged slip of the
   // nodes that slipped (a sticking node's slip is round-off, an open one's
   // its approach); a retry keeps that of the converged step.

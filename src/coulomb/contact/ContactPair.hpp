@@ -112,6 +112,9 @@ private:
   void searchAndIntegrate(const Vector& u);
   /// searchAndIntegrate at x_ (the search when due, the normals, D, M, g~).
   void integrateCurrentConfiguration();
+  /// The support of entry's node lies wholly on the master in configuration x
+  /// (|D_j - int N_j| <= 1e-3 int N_j, ContactPairSlip.cpp).
+  bool coveredByMaster(const NodalMortarEntry& entry, const InterfaceConfiguration& x) const;
   /// The derivative pass for the owned slave nodes flagged (ownedSlaveNodes() order).
   void differentiate(const std::vector<char>& ownedFlags);
   /// The one loop over the owned slave nodes (after searchAndIntegrate):
@@ -173,6 +176,9 @@ private:
   // accumulated over the steps before this one.
   NodalMortarQuantities stepStartMortar_;
   InterfaceConfiguration stepStartX_;
+  /// Per stepStartMortar_ entry: its node's support lay on the master at the
+  /// step start (coveredByMaster; the objective slip needs it, weightedSlip).
+  std::vector<char> stepStartCovered_;
   std::vector<std::array<double, 3>> accumulatedSlip_;
   /// The weighted slip of the last converged step (the slip direction of
   /// Slip Reset Frequency < 0); kept through a restoreStep().

@@ -18,6 +18,11 @@ namespace {
 constexpr double kCoverageTolerance = 1e-3;
 }  // namespace
 
+bool ContactPair::coveredByMaster(const NodalMortarEntry& entry, const InterfaceConfiguration& x) const {
+  const double support = nodalSupportMeasure(*interface_, x, interface_->slaveNodeIndex(entry.node));
+  return std::abs(entry.D - support) <= kCoverageTolerance * support;
+}
+
 std::array<double, 3> ContactPair::weightedSlip(const NodalMortarEntry& entry,
                                                 std::array<DerivativeRow, 3>* derivative) const {
   // Objective (4.69b): w = (D - D^t) x_j - sum_l (M_jl - M^t_jl) x_l, taken
@@ -40,12 +45,9 @@ std::array<double, 3> ContactPair::weightedSlip(const NodalMortarEntry& entry,
   // edge enters sum_l ΔM_jl (x_j - x_l) as slip (an over-count measured on
   // friction_patch_2d: 2.84e-3 at the node leaving the master against 1.95e-3
   // at its neighbours), and the non-objective measure is the right one.
-  const auto covered = [this](const NodalMortarEntry& e, const InterfaceConfiguration& x) {
-    const double support = nodalSupportMeasure(*interface_, x, interface_->slaveNodeIndex(e.node));
-    return std::abs(e.D - support) <= kCoverageTolerance * support;
-  };
   bool objective = settings_.slipMeasure == SlipMeasure::Objective && previous != nullptr &&
-                   covered(entry, x_) && covered(*previous, stepStartX_);
+                   stepStartCovered_[static_cast<std::size_t>(previous - stepStartMortar_.entries.data())] &&
+                   coveredByMaster(entry, x_);
   if (objective && settings_.operatorThreshold > 0.0) {
     // Relative change of D_j and the M_jl over the step (the seed's OPERATOR_THRESHOLD).
     double change = std::abs(entry.D - previous->D), size = std::abs(entry.D);

@@ -11,8 +11,8 @@
 
 #include <algorithm>
 #include <cerrno>
-#include <filesystem>
 #include <cstdint>
+#include <filesystem>
 #include <set>
 #include <utility>
 
@@ -189,8 +189,7 @@ void ExodusWriter::check(int status, const std::string& what) const {
   const auto space = std::filesystem::space(parent, ignored);
   if (error == ENOSPC || (!ignored && space.available < (1u << 20)))
     cause = "; the disk holding it is full (" + std::to_string(space.available / 1024) + " KiB free)";
-  COULOMB_REQUIRE(false, "exodus output '" << path_ << "': " << what << " failed (" << lastExodusError() << ")"
-                                           << cause);
+  throw Error("exodus output '" + path_ + "': " + what + " failed (" + lastExodusError() + ")" + cause);
 }
 
 void ExodusWriter::writeMesh(const mesh::GlobalMesh& mesh, const std::string& title) {

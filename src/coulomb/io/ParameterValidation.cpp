@@ -11,6 +11,7 @@
 #include <Teuchos_XMLParameterListReader.hpp>
 
 #include "coulomb/core/Error.hpp"
+#include "coulomb/core/UserMessage.hpp"
 #include "coulomb/io/DeckValueCheck.hpp"
 #include "coulomb/io/RangeValidator.hpp"
 
@@ -20,16 +21,6 @@ namespace {
 
 bool startsWith(const std::string& text, const char* prefix) {
   return text.rfind(prefix, 0) == 0;
-}
-
-/// Teuchos messages span several lines; a user needs one.
-std::string oneLine(std::string text) {
-  std::replace(text.begin(), text.end(), '\n', ' ');
-  std::string collapsed;
-  for (char c : text)
-    if (!(c == ' ' && !collapsed.empty() && collapsed.back() == ' ')) collapsed += c;
-  while (!collapsed.empty() && collapsed.back() == ' ') collapsed.pop_back();
-  return collapsed;
 }
 
 std::string validNames(const Teuchos::ParameterList& valid) {
@@ -70,7 +61,7 @@ std::string describeValidator(const Teuchos::ParameterEntryValidator& validator,
     for (const auto& s : *strings) list += (list.empty() ? "'" : ", '") + s + "'";
     return "must be one of " + list;
   }
-  return oneLine(teuchosMessage);
+  return userMessage(teuchosMessage);
 }
 
 }  // namespace
@@ -95,7 +86,7 @@ Teuchos::RCP<Teuchos::ParameterList> readXmlDeck(const std::string& path) {
     xml = Teuchos::FileInputSource(path).getObject();
   } catch (const std::exception& e) {
     // Keep the parser's own sentence ("XML parse error at line 47: ..."), not Teuchos' throw banner.
-    std::string reason = oneLine(e.what());
+    std::string reason = userMessage(e.what());
     if (const auto pos = reason.find("XML parse error"); pos != std::string::npos) reason = reason.substr(pos);
     if (first == '{' || first == '[') reason += " (it looks like JSON; Coulomb reads Teuchos XML decks)";
     throw Error("deck file '" + path + "' is not a valid Teuchos XML parameter list: " + reason);
@@ -106,7 +97,7 @@ Teuchos::RCP<Teuchos::ParameterList> readXmlDeck(const std::string& path) {
   try {
     return Teuchos::rcp(new Teuchos::ParameterList(Teuchos::XMLParameterListReader().toParameterList(xml)));
   } catch (const std::exception& e) {
-    throw Error("deck file '" + path + "' is not a valid Teuchos XML parameter list: " + oneLine(e.what()));
+    throw Error("deck file '" + path + "' is not a valid Teuchos XML parameter list: " + userMessage(e.what()));
   }
 }
 

@@ -241,9 +241,11 @@ RunSummary Simulation::run() {
     std::ostringstream kept;
     if (summary.steps == 0) kept << "no step yet";
     else kept << "the " << summary.steps << " converged steps up to t = " << time;
-    COULOMB_REQUIRE(false, "interrupted by " << signalName(signal) << " during the step to t = " << next
-                               << ": stopped; the result file keeps " << kept.str() << " as "
-                               << ResultWriter::partialPath(settings_.outputFile));
+    std::ostringstream message;
+    message << "interrupted by " << signalName(signal) << " during the step to t = " << next
+            << ": stopped; the result file keeps " << kept.str() << " as "
+            << ResultWriter::partialPath(settings_.outputFile);
+    throw Error(message.str());
   };
   while (!steps.finished()) {
     const double time = steps.time(), next = steps.nextTime();
