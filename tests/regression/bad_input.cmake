@@ -30,7 +30,7 @@ function(coulomb_bad_input case regex)
                      ${cdl_options}
                      "${regex}" ${COULOMB_BAD_INPUT_SOURCE}/${case}.xml ${np} ${COULOMB_MPIEXEC})
     set_tests_properties(${test} PROPERTIES
-      TIMEOUT 60 PROCESSORS ${np} SKIP_RETURN_CODE 77 LABELS "regression;bad_input")
+      TIMEOUT 60 PROCESSORS ${np} SKIP_RETURN_CODE 77 LABELS "regression;bad_input;fast")
   endforeach()
 endfunction()
 

@@ -79,8 +79,8 @@ TEST(LinearToleranceDeck, NoxToleranceOrForcingTermInTheDeckMeansFixed) {
   forcing.sublist("Nonlinear Solver").sublist("Direction").sublist("Newton").set("Forcing Term Method",
                                                                                    std::string("Type 2"));
   EXPECT_FALSE(parseRunSettings(forcing, "deck.xml").newton.linearTolerance.adaptive);
-  EXPECT_TRUE(NewtonSolver::noxSetsLinearTolerance(forcing.sublist("Nonlinear Solver")));
-  EXPECT_FALSE(NewtonSolver::noxSetsLinearTolerance(deckWithMesh()));
+  EXPECT_TRUE(noxSetsLinearTolerance(forcing.sublist("Nonlinear Solver")));
+  EXPECT_FALSE(noxSetsLinearTolerance(deckWithMesh()));
 }
 
 }  // namespace

@@ -123,7 +123,7 @@ RunSettings parseRunSettings(const ParameterList& deck, const std::string& deckP
   run.newton.linearTolerance.maximum = io::valueOrDefault<double>(sub("Newton"), newton, "Maximum Linear Tolerance");
   run.reuseConstantTangent = io::valueOrDefault<bool>(sub("Newton"), newton, "Reuse Constant Tangent");
   run.newton.reusePreconditioner = io::valueOrDefault<bool>(sub("Newton"), newton, "Reuse Preconditioner");
-  const bool userFixesLinearTolerance = NewtonSolver::noxSetsLinearTolerance(sub("Nonlinear Solver"));
+  const bool userFixesLinearTolerance = noxSetsLinearTolerance(sub("Nonlinear Solver"));
   const bool adaptive = kLinearTolerances.value(io::valueOrDefault<std::string>(sub("Newton"), newton, "Linear Tolerance"));
   if (userFixesLinearTolerance && sub("Newton").isParameter("Linear Tolerance") && adaptive)
     throw Error("deck: 'Newton/Linear Tolerance' = Adaptive contradicts the NOX 'Nonlinear Solver/Direction/Newton' "

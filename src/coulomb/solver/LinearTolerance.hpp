@@ -10,6 +10,10 @@
 /// residual only has to fall below the Newton tolerance. NOX's fixed default
 /// (1e-10) made hertz3d_r2 spend 31 of 39.5 s in GMRES for ~60 iterations a
 /// solve (tests/performance/README.md).
+namespace Teuchos {
+class ParameterList;
+}
+
 namespace coulomb::solver {
 
 struct LinearToleranceSettings {
@@ -37,5 +41,10 @@ struct LinearToleranceSettings {
 /// At a step's first iteration there is no rate yet: eta = maximum
 /// (looseFirstIteration) or what the target asks.
 double linearTolerance(const LinearToleranceSettings& settings, double normF, double normFPrevious, double target);
+
+/// The NOX list chooses the Krylov tolerance itself ("Direction"/"Newton"/
+/// "Linear Solver"/"Tolerance" or a "Forcing Term Method"): then the
+/// adaptive tolerance stays off, whatever the settings say.
+bool noxSetsLinearTolerance(const Teuchos::ParameterList& nox);
 
 }  // namespace coulomb::solver

@@ -344,14 +344,6 @@ Teuchos::RCP<Teuchos::ParameterList> NewtonSolver::defaultParameters() {
   return p;
 }
 
-bool NewtonSolver::noxSetsLinearTolerance(const Teuchos::ParameterList& nox) {
-  const auto* direction = nox.getPtr<Teuchos::ParameterList>("Direction");
-  const auto* newton = direction ? direction->getPtr<Teuchos::ParameterList>("Newton") : nullptr;
-  if (!newton) return false;
-  const auto* linear = newton->getPtr<Teuchos::ParameterList>("Linear Solver");
-  return newton->isParameter("Forcing Term Method") || (linear && linear->isParameter("Tolerance"));
-}
-
 NewtonSolver::NewtonSolver(Teuchos::RCP<ModelEvaluator> model, const Teuchos::ParameterList& noxParameters,
                            const NewtonSettings& settings, std::ostream* console,
                            const contact::ContactModel* contact)

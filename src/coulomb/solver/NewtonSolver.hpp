@@ -88,10 +88,6 @@ public:
 
   /// NOX defaults Coulomb uses (full Newton step, NOX's own printing off).
   static Teuchos::RCP<Teuchos::ParameterList> defaultParameters();
-  /// The NOX list chooses the Krylov tolerance itself ("Direction"/"Newton"/
-  /// "Linear Solver"/"Tolerance" or a "Forcing Term Method"): then the
-  /// adaptive tolerance stays off, whatever the settings say.
-  static bool noxSetsLinearTolerance(const Teuchos::ParameterList& nox);
 
 private:
   Teuchos::RCP<ModelEvaluator> model_;

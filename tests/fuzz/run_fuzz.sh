@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# Runs the libFuzzer harnesses of build-fuzz/ (tests/fuzz/CMakeLists.txt) and
+# prints, per harness: executions, corpus size before and after, findings.
+#
+#   tests/fuzz/run_fuzz.sh [--build DIR] [--runs N] [--jobs J] [HARNESS...]
+#     --build  the fuzz build folder (default build-fuzz)
+#     --runs   executions per harness (default 1000000; ctest's smoke run: 2000)
+#     HARNESS  deck exodus gmsh (default: all three)
+#
+# First every minimised input in tests/fuzz/regressions/<harness>/ (past
+# findings) is replayed; then the harness runs from a seed corpus built from
+# what the project ships (decks, Exodus meshes, gmsh files made from
+# exodus_meshes/*.geo) into DIR/corpus/<harness>, which grows from run to run.
+# Findings (crash-*, leak-*, timeout-*, oom-*) land in DIR/findings/<harness>/;
+# the exit code is non-zero when there is one.
+set -uo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+build="$here/build-fuzz" runs=1000000 harnesses=()
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --build) build=$2; shift 2 ;;
+    --runs) runs=$2; shift 2 ;;
+    -*) echo "run_fuzz.sh: unknown option $1" >&2; exit 2 ;;
+    *) harnesses+=("$1"); shift ;;
+  esac
+done
+[[ ${#harnesses[@]} -eq 0 ]] && harnesses=(deck exodus gmsh)
+
+seed() {  # seed <harness> <corpus dir>
+  local harness=$1 corpus=$2
+  mkdir -p "$corpus"
+  case "$harness" in
+    deck)
+      find "$here/xml" "$here/tests" -name '*.xml' -size -64k -exec cp -t "$corpus" {} + ;;
+    exodus)
+      find "$here/xml" "$here/exodus_meshes" -name '*.e' -size -64k -exec cp -t "$corpus" {} + ;;
+    gmsh)
+      local geo
+      for geo in block2d block2d_tri contact_patch2d block3d_tet friction_punch; do
+        local d=2
+        grep -q 'Volume' "$here/exodus_meshes/$geo.geo" && d=3
+        gmsh -$d -format msh22 -setnumber n 2 -o "$corpus/$geo.msh" "$here/exodus_meshes/$geo.geo" >/dev/null 2>&1 ||
+          echo "run_fuzz.sh: gmsh could not mesh $geo.geo (seed skipped)" >&2
+      done ;;
+  esac
+}
+
+status=0
+printf '%-7s %12s %8s %8s %9s %8s\n' harness executions seeds corpus seconds findings
+for harness in "${harnesses[@]}"; do
+  exe="$build/fuzz_$harness"
+  [[ -x $exe ]] || { echo "run_fuzz.sh: $exe is missing (build $build first)" >&2; exit 2; }
+  corpus="$build/corpus/$harness" findings="$build/findings/$harness" log="$build/fuzz_$harness.log"
+  mkdir -p "$findings"
+  [[ -d $corpus ]] || seed "$harness" "$corpus"
+  seeds=$(find "$corpus" -type f | wc -l)
+  # Past findings must stay fixed.
+  regressions=("$here/tests/fuzz/regressions/$harness"/*)
+  if [[ -e ${regressions[0]} ]]; then
+    if ! "$exe" -rss_limit_mb=2048 -timeout=10 "${regressions[@]}" >"$log.regressions" 2>&1; then
+      echo "run_fuzz.sh: $harness: a past finding is back (log: $log.regressions)" >&2
+      status=1
+    fi
+  fi
+  # Memory: resident memory is bounded at 2 GiB for every harness. A single
+  # allocation may be larger only for the Exodus harness: netCDF's header
+  # reader (nc_open, before any check of ours) callocs the sizes a corrupted
+  # header declares, up to 4 GiB for classic files, and fails when the file
+  # holds less; the pages are never touched, so resident memory stays small.
+  malloc_limit=2048
+  [[ $harness == exodus ]] && malloc_limit=4096
+  start=$SECONDS
+  "$exe" -runs="$runs" -rss_limit_mb=2048 -malloc_limit_mb=$malloc_limit -timeout=10 -max_len=65536 \
+         -print_final_stats=1 -artifact_prefix="$findings/" "$corpus" >"$log" 2>&1
+  rc=$?
+  executions=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$')
+  size=$(find "$corpus" -type f | wc -l)
+  found=$(find "$findings" -type f | wc -l)
+  printf '%-7s %12s %8s %8s %9s %8s\n' "$harness" "${executions:-?}" "$seeds" "$size" $((SECONDS - start)) "$found"
+  if [[ $rc -ne 0 || $found -ne 0 ]]; then
+    echo "run_fuzz.sh: $harness: exit $rc; findings in $findings; log $log:" >&2
+    grep -E 'ERROR|SUMMARY|terminate|what\(\)' "$log" | head -5 >&2
+    status=1
+  fi
+done
+exit $status
