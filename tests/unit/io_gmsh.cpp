@@ -192,6 +192,17 @@ TEST(GmshIo, Errors) {
   expectErrorContaining([&] { coulomb::io::readGmsh(quadratic); }, {quadratic, "6-node triangle"});
 }
 
+// Found by tests/fuzz (fuzz_gmsh; input tests/fuzz/regressions/gmsh/):
+// a node or element count far beyond what the file holds was reserved
+// ahead of reading, ending in std::length_error / bad_alloc instead of a
+// message naming the file.
+TEST(GmshIo, HugeCountIsAnErrorNotAnAllocation) {
+  for (const char* count : {"$Nodes\n123456789012345\n", "$Nodes\n1\n1 0 0 0\n$EndNodes\n$Elements\n98765432109876\n"}) {
+    const std::string path = writeText("huge_count.msh", std::string("$MeshFormat\n2.2 0 8\n$EndMeshFormat\n") + count);
+    expectErrorContaining([&] { coulomb::io::readGmsh(path); }, {path});
+  }
+}
+
 TEST(GmshIo, ConverterToolReportsErrorsOnOneLine) {
   const std::string tool = std::string(COULOMB_BINARY_DIR) + "/coulomb_gmsh2exo";
   if (!std::filesystem::exists(tool)) GTEST_SKIP() << "coulomb_gmsh2exo not built yet at " << tool;

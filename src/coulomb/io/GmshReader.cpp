@@ -21,6 +21,9 @@
 namespace coulomb::io {
 namespace {
 
+// Largest number of nodes or elements reserved ahead of reading them.
+constexpr long long kMaxReserve = 1 << 20;
+
 using mesh::CellType;
 
 struct GmshElement {
@@ -172,8 +175,11 @@ private:
 
   void readNodes() {
     const long long n = readCount("nodes");
-    file_.nodeTags.reserve(static_cast<std::size_t>(n));
-    file_.xyz.reserve(static_cast<std::size_t>(3 * n));
+    // The count is the file's word: reserve at most what a plausible file
+    // holds (a corrupted count then ends at a bad line, not in a huge allocation).
+    const auto expected = static_cast<std::size_t>(std::min(n, kMaxReserve));
+    file_.nodeTags.reserve(expected);
+    file_.xyz.reserve(3 * expected);
     for (long long i = 0; i < n; ++i) {
       std::istringstream s(require("$Nodes"));
       long long tag = 0;
@@ -187,7 +193,7 @@ private:
 
   void readElements() {
     const long long n = readCount("elements");
-    file_.elements.reserve(static_cast<std::size_t>(n));
+    file_.elements.reserve(static_cast<std::size_t>(std::min(n, kMaxReserve)));
     for (long long i = 0; i < n; ++i) {
       std::istringstream s(require("$Elements"));
       GmshElement e;
