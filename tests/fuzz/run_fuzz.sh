@@ -51,7 +51,7 @@ for harness in "${harnesses[@]}"; do
   exe="$build/fuzz_$harness"
   [[ -x $exe ]] || { echo "run_fuzz.sh: $exe is missing (build $build first)" >&2; exit 2; }
   corpus="$build/corpus/$harness" findings="$build/findings/$harness" log="$build/fuzz_$harness.log"
-  mkdir -p "$findings"
+  rm -rf -- "$findings" && mkdir -p "$findings"  # this run's findings only
   [[ -d $corpus ]] || seed "$harness" "$corpus"
   seeds=$(find "$corpus" -type f | wc -l)
   # Past findings must stay fixed.
