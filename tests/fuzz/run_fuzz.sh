@@ -62,13 +62,10 @@ for harness in "${harnesses[@]}"; do
       status=1
     fi
   fi
-  # Memory: resident memory is bounded at 2 GiB for every harness. A single
-  # allocation may be larger only for the Exodus harness: netCDF's header
-  # reader (nc_open, before any check of ours) callocs the sizes a corrupted
-  # header declares, up to 4 GiB for classic files, and fails when the file
-  # holds less; the pages are never touched, so resident memory stays small.
+  # Memory: resident memory and any single allocation are bounded at 2 GiB
+  # (a damaged classic netCDF header is refused before netCDF allocates the
+  # counts it declares: io/NetcdfHeaderCheck.hpp).
   malloc_limit=2048
-  [[ $harness == exodus ]] && malloc_limit=4096
   start=$SECONDS
   "$exe" -runs="$runs" -rss_limit_mb=2048 -malloc_limit_mb=$malloc_limit -timeout=10 -max_len=65536 \
          -print_final_stats=1 -artifact_prefix="$findings/" "$corpus" >"$log" 2>&1

@@ -62,6 +62,21 @@ coulomb_bad_input(unknown_side_set "'Neumann Conditions/top pressure/Side Set'.*
 coulomb_bad_input(unsupported_element_hex20 "hex20_block[.]e.*'quadratic'.*HEX20" CDL hex20_block.cdl)
 coulomb_bad_input(unsupported_element_truss "truss_block[.]e.*'tie'.*TRUSS" CDL truss_block.cdl)
 coulomb_bad_input(inverted_element "element 2 of block 'body'.*inverted" CDL inverted_hex8.cdl)
+coulomb_bad_input(mesh_zero_volume_element "element 2 of block 'body' has zero volume" NP 1 2 CDL zero_volume_hex8.cdl)
+coulomb_bad_input(mesh_coincident_nodes "coincident_hex8[.]e': nodes 2 and 9 are at the same point [(]1, 0, 0[)].*not merged"
+                  NP 1 2 CDL coincident_hex8.cdl)
+coulomb_bad_input(mesh_2d_cells_in_3d_file "quad4_in_3d_file[.]e': element block 'body'.*QUAD4 [(]a 2D cell[)] in a 3D file"
+                  NP 1 2 CDL quad4_in_3d_file.cdl)
+coulomb_bad_input(mesh_absurd_node_count
+                  "absurd_node_count[.]e': 2000000000 nodes and 2 elements need at least .* but .* are available"
+                  NP 1 2 CDL absurd_node_count.cdl)
+coulomb_bad_input(deck_2d_on_3d_mesh "'Problem/Plane Assumption' is for 2D meshes, but the mesh is 3D" NP 1 2)
+coulomb_bad_input(deck_thickness_on_3d_mesh "'Element Blocks/body/Thickness' is for 2D meshes, but the mesh is 3D" NP 1 2)
+
+# A run that cannot converge: the message names the step, the limit, the missed criteria, what the file keeps.
+coulomb_bad_input(newton_out_of_iterations
+                  "Newton did not converge at t = 0[.]5 .*after 1 iterations [(]the limit, 'Newton/Maximum Iterations' = 1[)] not met: the (equilibrium residual|active set).*keeps no converged step as "
+                  NP 1 2)
 
 # Contact pairs.
 coulomb_bad_input(contact_unknown_slave_set "'Contact/Pairs/punch.*'slavee'" NP 1 2)
@@ -69,6 +84,10 @@ coulomb_bad_input(contact_slave_equals_master "'Contact/Pairs/punch'.*'master'.*
 coulomb_bad_input(contact_negative_penalty "'Contact/Pairs/punch/Penalty'")
 coulomb_bad_input(contact_unknown_formulation "'Contact/Pairs/punch/Formulation'")
 coulomb_bad_input(contact_friction_negative_coefficient "'Contact/Pairs/punch/Friction Coefficient'")
+coulomb_bad_input(contact_friction_huge_coefficient "'Contact/Pairs/punch/Friction Coefficient' = 1e[+]06 is not a friction coefficient" NP 1 2)
+coulomb_bad_input(contact_surface_inside_body
+                  "Contact/Pairs/joint: slave side set 'left_face': side 2 of element 1 is inside a body [(]element 2"
+                  NP 1 2 CDL contact_inside_body.cdl)
 coulomb_bad_input(contact_friction_tresca_zero_threshold "'Contact/Pairs/punch/Tresca Threshold' must be > 0")
 coulomb_bad_input(contact_friction_unknown_law "'Contact/Pairs/punch/Friction Law'")
 coulomb_bad_input(contact_friction_zero_tangent_factor "'Contact/Pairs/punch/Tangent Factor'")

@@ -60,7 +60,9 @@ for cdl in "${cdls[@]+"${cdls[@]}"}"; do
     echo "SKIPPED: ncgen not installed (needed to make $(basename -- "$cdl" .cdl).e; Debian package netcdf-bin)"
     exit 77
   fi
-  ncgen -k classic -o "$workdir/$(basename -- "$cdl" .cdl).e" "$cdl" || { echo "FAIL: ncgen $cdl"; exit 1; }
+  # A CDL file may ask for another netCDF kind on a line "// ncgen kind: nc4".
+  kind=$(sed -n 's|^// ncgen kind: *\([a-z0-9-]*\).*|\1|p' "$cdl" | head -1)
+  ncgen -k "${kind:-classic}" -o "$workdir/$(basename -- "$cdl" .cdl).e" "$cdl" || { echo "FAIL: ncgen $cdl"; exit 1; }
 done
 
 command=("${mpirun[@]}" -np "$np" "$exe" "$deck")

@@ -16,6 +16,17 @@ foreach(spec ${COULOMB_ZOO_CASES})
   endforeach()
 endforeach()
 
+# More ranks than elements (issue 17, item 4): at np 3 and 4 the two
+# one-element bodies leave ranks that own no element of a block, no slave
+# face, or nothing at all.
+foreach(np 3 4)
+  add_test(NAME Zoo.one_element_bodies_3d.np${np}
+           COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/tests/zoo/run_zoo.py --exe ${COULOMB_EXE}
+                   --np ${np} --cases one_element_bodies_3d --out ${CMAKE_CURRENT_BINARY_DIR}/zoo/np${np})
+  set_tests_properties(Zoo.one_element_bodies_3d.np${np} PROPERTIES TIMEOUT 300 PROCESSORS ${np} LABELS zoo
+                       RESOURCE_LOCK zoo_mesh_one_element_bodies_3d)
+endforeach()
+
 # One problem in three unit systems (mm/N/MPa, m/N/Pa, mm/kN/GPa) converges in
 # the same Newton iterations: part of the default suite (about 3 x 7 s).
 set(COULOMB_UNITS_CASES units_patch_3d_mm,units_patch_3d_m,units_patch_3d_kN)

@@ -344,3 +344,12 @@ TEST(ExodusIo, ElementTypeNames) {
   EXPECT_FALSE(coulomb::io::parseExodusElementType("SHELL4", 4, t));
   EXPECT_FALSE(coulomb::io::parseExodusElementType("WEDGE", 6, t));
 }
+
+// A damaged file whose side-set variable is longer than the dimension the
+// exodusII library sizes its buffer from (a dimension renamed to a duplicate
+// name, found by tests/fuzz/fuzz_exodus: a heap overflow inside the library
+// and a double free) is refused before the library reads the variable.
+TEST(ExodusIo, VariableLongerThanItsDimensionIsRefusedBeforeReading) {
+  const std::string path = std::string(COULOMB_SOURCE_DIR) + "/tests/fuzz/regressions/exodus/side_set_dimension_renamed.e";
+  expectErrorContaining([&] { coulomb::io::readExodus(path); }, {path, "netCDF variable", "the file is damaged"});
+}

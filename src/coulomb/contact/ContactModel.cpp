@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <map>
+#include <sstream>
 #include <unordered_map>
 
 #include <Teuchos_TimeMonitor.hpp>
@@ -290,6 +292,38 @@ bool ContactModel::converged() const {
   // (4.78) on the contact rows, or the seed's increment and mixed criteria on the force increments.
   if (settings_.criterion != ConvergenceCriterion::Residual) return summary_.incrementsConverged(settings_);
   return summary_.normalConverged(settings_) && summary_.tangentialConverged(settings_);
+}
+
+std::string ContactModel::unmetCriteria() const {
+  const ContactIterationSummary& s = summary_;
+  const ContactSettings& t = settings_;
+  std::ostringstream out;
+  out << std::setprecision(3);
+  auto separate = [&out] {
+    if (out.tellp() > 0) out << ", ";
+  };
+  if (!s.activeSet.unchanged()) {
+    separate();
+    out << "the active set (" << s.activeSet.changed + s.activeSet.stickSlipChanged
+        << " slave nodes changed state at the last iterate)";
+  }
+  // The groups of (4.78), or their force increments (Increment, Mixed criteria).
+  const bool increments = t.criterion != ConvergenceCriterion::Residual;
+  const char* measure = increments ? "change of the " : "";
+  auto group = [&](const char* name, double value, double relative, double absolute) {
+    const double limit = relative * s.contactForce + absolute;
+    if (value <= limit) return;
+    separate();
+    out << "the " << measure << name << " (" << value << " > " << limit << ")";
+  };
+  group("normal contact rows", increments ? s.normalIncrement : s.normalResidual, t.normalRelativeTolerance,
+        t.normalAbsoluteTolerance);
+  if (s.tangentialForce > t.tangentNormalRatio * s.contactForce) {
+    group("stick rows", increments ? s.stickIncrement : s.stickResidual, t.stickRelativeTolerance,
+          t.stickAbsoluteTolerance);
+    group("slip rows", increments ? s.slipIncrement : s.slipResidual, t.slipRelativeTolerance, t.slipAbsoluteTolerance);
+  }
+  return out.str();
 }
 
 std::vector<std::string> ContactModel::nodalFieldNames() const {

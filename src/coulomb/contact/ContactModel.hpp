@@ -139,6 +139,10 @@ public:
   const std::vector<PairIterationSummary>& pairSummaries() const { return pairSummaries_; }
   /// Converged: active set unchanged at the last update and the normal test met.
   bool converged() const;
+  /// Which contact criteria the last update did not meet, for the message
+  /// of a step that ran out of iterations ("the active set (2 nodes changed
+  /// state), the slip rows (||.|| = 3e-2 > 1e-4)"); empty when all are met.
+  std::string unmetCriteria() const;
   /// The sets of this step's iterates cycle (ActiveSetCycle): its period, or 0.
   int cyclePeriod() const { return cycle_.period(); }
   /// What cycles, for the console (empty when cyclePeriod() is 0).

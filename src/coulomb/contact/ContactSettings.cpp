@@ -37,6 +37,12 @@ const io::Choices<ConvergenceCriterion> kCriteria{{"Residual", ConvergenceCriter
 const io::Choices<ContactSystemForm> kSystemForms{{"Condensed", ContactSystemForm::Condensed},
                                                   {"Saddle Point", ContactSystemForm::SaddlePoint}};
 
+/// Measured friction coefficients stay below 10 (rubber on clean glass
+/// reaches about 4): a larger mu is a unit or typing error. At mu = 10 a
+/// node already sticks wherever its tangential traction is below ten times
+/// its pressure.
+constexpr double kLargestFrictionCoefficient = 10.0;
+
 }  // namespace
 
 const char* toString(ContactFormulation formulation) { return kFormulations.name(formulation); }
@@ -218,6 +224,11 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
                     where << "Friction Coefficient' is given but 'Friction Law' is not Coulomb");
     COULOMB_REQUIRE(s.friction.type == FrictionLawType::Tresca || !p.isParameter("Tresca Threshold"),
                     where << "Tresca Threshold' is given but 'Friction Law' is not Tresca");
+    COULOMB_REQUIRE(s.friction.coefficient <= kLargestFrictionCoefficient,
+                    where << "Friction Coefficient' = " << s.friction.coefficient
+                          << " is not a friction coefficient (measured ones stay below "
+                          << kLargestFrictionCoefficient << "); a contact that must not slide sticks with mu = "
+                          << kLargestFrictionCoefficient << " already");
     COULOMB_REQUIRE(s.slipThreshold < 1.0, where << "Slip Threshold' must be < 1, got " << s.slipThreshold);
     COULOMB_REQUIRE(s.slipResetFrequency >= 0 || s.formulation != ContactFormulation::Penalty,
                     where << "Slip Reset Frequency' < 0 (slip direction from the last step's slip) is for ALM and "
@@ -251,9 +262,11 @@ void loadFrictionFields(ContactSettings& settings, const std::string& meshFile) 
                           << "'");
     pair.nodalFrictionCoefficients = results.nodal.back()[static_cast<std::size_t>(it - names.begin())];
     for (std::size_t i = 0; i < pair.nodalFrictionCoefficients.size(); ++i)
-      COULOMB_REQUIRE(pair.nodalFrictionCoefficients[i] >= 0.0,
-                      where << "'" << pair.frictionCoefficientField << "' is negative at node " << i + 1 << " ("
-                            << pair.nodalFrictionCoefficients[i] << ")");
+      COULOMB_REQUIRE(pair.nodalFrictionCoefficients[i] >= 0.0 &&
+                          pair.nodalFrictionCoefficients[i] <= kLargestFrictionCoefficient,
+                      where << "'" << pair.frictionCoefficientField << "' is " << pair.nodalFrictionCoefficients[i]
+                            << " at node " << i + 1 << ", outside [0, " << kLargestFrictionCoefficient
+                            << "] (a friction coefficient)");
   }
 }
 

@@ -69,4 +69,23 @@ std::vector<double> exchangeByRank(const Teuchos::Comm<int>& comm, std::vector<s
   return received;
 }
 
+MemoryBudget memoryBudget(const Teuchos::Comm<int>& comm) {
+  MemoryBudget budget;
+  budget.ranks = comm.getSize();
+  int onHost = 1;
+  if (const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm)) {
+    MPI_Comm host = MPI_COMM_NULL;
+    MPI_Comm_split_type(*mpi->getRawMpiComm(), MPI_COMM_TYPE_SHARED, comm.getRank(), MPI_INFO_NULL, &host);
+    MPI_Comm_size(host, &onHost);
+    MPI_Comm_free(&host);
+  }
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, onHost, Teuchos::outArg(budget.ranksOnHost));
+  // 0 (unknown) on any rank means no check anywhere.
+  const unsigned long long mine = availableMemoryBytes();
+  unsigned long long least = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MIN, mine, Teuchos::outArg(least));
+  budget.availableBytes = least;
+  return budget;
+}
+
 }  // namespace coulomb

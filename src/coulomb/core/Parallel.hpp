@@ -7,6 +7,8 @@
 
 #include <Teuchos_Comm.hpp>
 
+#include "coulomb/core/MemoryBudget.hpp"
+
 namespace coulomb {
 
 /// @brief Collective: if any rank passes a non-empty `localMessage`, every
@@ -24,5 +26,10 @@ bool anyRank(const Teuchos::Comm<int>& comm, bool local);
 /// what every rank sent here, concatenated in rank order (one MPI_Alltoall of
 /// the sizes, one MPI_Alltoallv of the doubles). `send` has one entry per rank.
 std::vector<double> exchangeByRank(const Teuchos::Comm<int>& comm, std::vector<std::vector<double>> send);
+
+/// @brief Collective: the run's memory budget, the same on every rank so
+/// that all reach the same verdict on a mesh: the smallest available memory
+/// of any machine, the most ranks on one machine (MPI_COMM_TYPE_SHARED).
+MemoryBudget memoryBudget(const Teuchos::Comm<int>& comm);
 
 }  // namespace coulomb

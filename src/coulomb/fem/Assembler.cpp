@@ -13,6 +13,7 @@
 #include "coulomb/core/Error.hpp"
 #include "coulomb/core/Parallel.hpp"
 #include "coulomb/fem/ElementKernel.hpp"
+#include "coulomb/fem/MeshChecks.hpp"
 #include "coulomb/fem/FaceKernel.hpp"
 #include "coulomb/fem/FaceTopology.hpp"
 #include "coulomb/fem/SparsityPattern.hpp"
@@ -139,10 +140,14 @@ struct Assembler::Impl {
     const std::array<double, Traits::dim> noForce{};
     for (long long element : mesh.localElements(b)) {
       gather<T>(&block.connectivity[(element - block.firstElement) * Traits::nodes], nullptr, X, ue, ldof);
-      if (cellResidualTangent<T>(blockMaterial[b], X, ue, noForce, re, nullptr) == KernelStatus::InvertedReference)
-        return "mesh: element " + std::to_string(element + 1) + " of block '" +
-               mesh::displayName(block.name, "block", block.id) +
-               "' is inverted or degenerate (non-positive Jacobian); check its node order";
+      if (cellResidualTangent<T>(blockMaterial[b], X, ue, noForce, re, nullptr) != KernelStatus::InvertedReference)
+        continue;
+      const std::string which = "mesh: element " + std::to_string(element + 1) + " of block '" +
+                                mesh::displayName(block.name, "block", block.id) + "'";
+      if (hasZeroVolume(T, X.data()))
+        return which + " has zero volume (its nodes lie on one " + (Traits::dim == 3 ? "plane" : "line") +
+               " or coincide): remesh or remove the degenerate cell";
+      return which + " is inverted or degenerate (non-positive Jacobian); check its node order";
     }
     return "";
   }

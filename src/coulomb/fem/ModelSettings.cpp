@@ -117,6 +117,9 @@ ModelSettings parseModelSettings(const ParameterList& deck, int dimension) {
   const ParameterList& problem = deck.isSublist("Problem") ? deck.sublist("Problem") : empty;
   const PlaneAssumption plane =
       kPlaneAssumptions.value(io::valueOrDefault<std::string>(problem, valid.sublist("Problem"), "Plane Assumption"));
+  // A 2D deck on a 3D mesh would run, with what the user gave ignored.
+  COULOMB_REQUIRE(dimension == 2 || !problem.isParameter("Plane Assumption"),
+                  "deck: 'Problem/Plane Assumption' is for 2D meshes, but the mesh is 3D");
 
   const ParameterList& materials = deck.isSublist("Materials") ? deck.sublist("Materials") : empty;
   const ParameterList& validMaterial = valid.sublist("Materials").sublist("*");
@@ -137,6 +140,8 @@ ModelSettings parseModelSettings(const ParameterList& deck, int dimension) {
     p.plane = plane;
     COULOMB_REQUIRE(!(dimension == 2 && p.plane == PlaneAssumption::PlaneStress && p.model == MaterialModel::NeoHookean),
                     "deck: '" << where << "' is Neo-Hookean, which supports only 'Problem/Plane Assumption' = 'Plane Strain'");
+    COULOMB_REQUIRE(dimension == 2 || !block.isParameter("Thickness"),
+                    "deck: 'Element Blocks/" << blockName << "/Thickness' is for 2D meshes, but the mesh is 3D");
     p.thickness = io::valueOrDefault<double>(block, validBlock, "Thickness");
     model.blockMaterials[blockName] = p;
   }

@@ -112,9 +112,12 @@ void checkXmlDeckValues(const Teuchos::XMLObject& root) { checkList(root, ""); }
 
 void checkXmlDeckShape(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
-  std::string text(kMaxDeckBytes + 1, '\0');
-  in.read(&text[0], static_cast<std::streamsize>(text.size()));
-  text.resize(static_cast<std::size_t>(in.gcount()));
+  // Read in pieces up to one byte past the limit (a 4 MiB buffer for every
+  // deck cost more than the rest of the reading).
+  std::string text;
+  char piece[1 << 16];
+  while (text.size() <= kMaxDeckBytes && in.read(piece, sizeof piece).gcount() > 0)
+    text.append(piece, static_cast<std::size_t>(in.gcount()));
   COULOMB_REQUIRE(text.size() <= kMaxDeckBytes, "deck file '" << path << "' is larger than " << (kMaxDeckBytes >> 20)
                                                                << " MiB: a deck holds parameters (fields and tables "
                                                                   "belong in the mesh file)");

@@ -10,6 +10,7 @@
 #include "coulomb/io/ExodusReader.hpp"
 
 #include <exodusII.h>
+#include <netcdf.h>
 
 #include <algorithm>
 #include <cctype>
@@ -17,10 +18,12 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <vector>
 
 #include "coulomb/core/Error.hpp"
 #include "coulomb/io/ExodusError.hpp"
+#include "coulomb/io/NetcdfHeaderCheck.hpp"
 
 namespace coulomb::io {
 namespace {
@@ -46,13 +49,17 @@ std::string trimmed(const char* raw) {
 
 class Reader {
 public:
-  explicit Reader(const std::string& path) : path_(path) {}
+  Reader(const std::string& path, const MemoryBudget& budget) : path_(path), budget_(budget) {}
 
   mesh::GlobalMesh read() {
     {
       std::ifstream probe(path_);
       COULOMB_REQUIRE(probe.good(), "mesh '" << path_ << "': cannot open file (missing or not readable)");
     }
+    // netCDF allocates what a classic header declares: damaged counts are
+    // caught here, before they become an out-of-memory kill.
+    const std::string damaged = classicNetcdfHeaderProblem(path_);
+    COULOMB_REQUIRE(damaged.empty(), "mesh '" << path_ << "': " << damaged);
     ex_opts(EX_DEFAULT);  // no printing, no abort: we report errors ourselves
     int cpuWordSize = sizeof(double);
     int ioWordSize = 0;
@@ -73,6 +80,8 @@ public:
                     "mesh '" << path_ << "': spatial dimension " << init.num_dim << " is not supported (need 2 or 3)");
     mesh_.dimension = static_cast<int>(init.num_dim);
     COULOMB_REQUIRE(init.num_nodes > 0, "mesh '" << path_ << "': has no nodes");
+    const std::string tooLarge = meshMemoryProblem(init.num_nodes, init.num_elem, mesh_.dimension, budget_);
+    COULOMB_REQUIRE(tooLarge.empty(), "mesh '" << path_ << "': " << tooLarge);
     readCoordinates(init.num_nodes);
     if (init.num_elem_blk > 0) readBlocks(init.num_elem_blk);
     COULOMB_REQUIRE(mesh_.numElements() == init.num_elem,
@@ -88,8 +97,42 @@ private:
     COULOMB_REQUIRE(status >= 0, "mesh '" << path_ << "': " << what << " failed (" << lastExodusError() << ")");
   }
 
+  bool hasVariable(const std::string& name) const {
+    int varid = 0;
+    return nc_inq_varid(file_.id, name.c_str(), &varid) == NC_NOERR;
+  }
+
+  /// The exodusII library reads a whole netCDF variable into the buffer it
+  /// is given, sized from a dimension it looks up by name; in a damaged file
+  /// the variable can be longer than that dimension (a renamed or duplicated
+  /// dimension), and the read would write past the buffer (found by
+  /// tests/fuzz/fuzz_exodus). So the variable's own length is checked first.
+  /// A missing variable is left to the library's own error.
+  void requireLength(const std::string& name, std::size_t expected, const std::string& what) const {
+    int varid = 0, numDims = 0;
+    if (nc_inq_varid(file_.id, name.c_str(), &varid) != NC_NOERR) return;
+    auto ok = [&](int status) {
+      COULOMB_REQUIRE(status == NC_NOERR, "mesh '" << path_ << "': reading the shape of " << what << " failed ("
+                                                   << nc_strerror(status) << ")");
+    };
+    ok(nc_inq_varndims(file_.id, varid, &numDims));
+    std::vector<int> dims(static_cast<std::size_t>(std::max(numDims, 0)));
+    if (numDims > 0) ok(nc_inq_vardimid(file_.id, varid, dims.data()));
+    std::size_t length = 1;
+    for (int dim : dims) {
+      std::size_t extent = 0;
+      ok(nc_inq_dimlen(file_.id, dim, &extent));
+      length *= extent;
+    }
+    COULOMB_REQUIRE(length == expected, "mesh '" << path_ << "': " << what << " (netCDF variable '" << name
+                                                 << "') holds " << length << " values where the header declares "
+                                                 << expected << ": the file is damaged");
+  }
+
   std::vector<int64_t> ids(ex_entity_type type, int64_t count, const char* what) {
     std::vector<int64_t> result(static_cast<std::size_t>(count));
+    const char* variable = type == EX_ELEM_BLOCK ? "eb_prop1" : type == EX_NODE_SET ? "ns_prop1" : "ss_prop1";
+    requireLength(variable, result.size(), std::string("the ") + what + " ids");
     check(ex_get_ids(file_.id, type, result.data()), std::string("reading the ") + what + " ids");
     return result;
   }
@@ -108,6 +151,12 @@ private:
   void readCoordinates(int64_t numNodes) {
     const auto n = static_cast<std::size_t>(numNodes);
     std::vector<double> x(n), y(n), z(mesh_.dimension == 3 ? n : 0);
+    if (hasVariable("coord")) {
+      requireLength("coord", n * static_cast<std::size_t>(mesh_.dimension), "the coordinates");
+    } else {
+      for (int c = 0; c < mesh_.dimension; ++c)
+        requireLength(std::string("coord") + "xyz"[c], n, "the coordinates");
+    }
     check(ex_get_coord(file_.id, x.data(), y.data(), mesh_.dimension == 3 ? z.data() : nullptr),
           "reading the coordinates");
     const int d = mesh_.dimension;
@@ -149,6 +198,7 @@ private:
                                << "D file; supported: QUAD4, TRI3 in 2D files, HEX8, TET4 in 3D files");
       block.connectivity.resize(static_cast<std::size_t>(param.num_entry * param.num_nodes_per_entry));
       if (param.num_entry > 0) {
+        requireLength("connect" + std::to_string(b + 1), block.connectivity.size(), "the connectivity of " + label);
         check(ex_get_conn(file_.id, EX_ELEM_BLOCK, param.id, block.connectivity.data(), nullptr, nullptr),
               "reading the connectivity of " + label);
       }
@@ -192,6 +242,7 @@ private:
       check(ex_get_set_param(file_.id, EX_NODE_SET, setIds[s], &numEntries, &numFactors), "reading " + label);
       set.nodes.resize(static_cast<std::size_t>(numEntries));
       if (numEntries > 0) {
+        requireLength("node_ns" + std::to_string(s + 1), set.nodes.size(), label);
         check(ex_get_set(file_.id, EX_NODE_SET, setIds[s], set.nodes.data(), nullptr), "reading " + label);
       }
       for (long long& node : set.nodes) {
@@ -217,6 +268,8 @@ private:
       std::vector<int64_t> sides(static_cast<std::size_t>(numEntries));
       set.elements.resize(static_cast<std::size_t>(numEntries));
       if (numEntries > 0) {
+        requireLength("elem_ss" + std::to_string(s + 1), sides.size(), label);
+        requireLength("side_ss" + std::to_string(s + 1), sides.size(), label);
         check(ex_get_set(file_.id, EX_SIDE_SET, setIds[s], set.elements.data(), sides.data()), "reading " + label);
       }
       set.sides.resize(sides.size());
@@ -245,6 +298,7 @@ private:
   }
 
   std::string path_;
+  MemoryBudget budget_;
   FileGuard file_;
   std::size_t nameBufferLength_ = 257;
   mesh::GlobalMesh mesh_;
@@ -272,6 +326,12 @@ bool parseExodusElementType(const std::string& type, int nodesPerElement, mesh::
   return true;
 }
 
-mesh::GlobalMesh readExodus(const std::string& path) { return Reader(path).read(); }
+mesh::GlobalMesh readExodus(const std::string& path, const MemoryBudget& budget) { return Reader(path, budget).read(); }
+
+mesh::GlobalMesh readExodus(const std::string& path) {
+  MemoryBudget budget;
+  budget.availableBytes = availableMemoryBytes();
+  return readExodus(path, budget);
+}
 
 }  // namespace coulomb::io

@@ -9,6 +9,7 @@
 /// headers stay in the .cpp so that including this file costs nothing.
 #include <string>
 
+#include "coulomb/core/MemoryBudget.hpp"
 #include "coulomb/mesh/GlobalMesh.hpp"
 
 namespace coulomb::io {
@@ -28,7 +29,14 @@ namespace coulomb::io {
 ///   factors, attributes, maps and results in the file are ignored.
 ///
 /// @throws coulomb::Error naming @p path when the file is missing, is not an
-/// Exodus file, or holds something Coulomb cannot use.
+/// Exodus file, or holds something Coulomb cannot use, or when the counts
+/// of its header need more memory than @p budget gives
+/// (meshMemoryProblem: a damaged header or a mesh too large for the
+/// machine; checked before anything is allocated).
+mesh::GlobalMesh readExodus(const std::string& path, const MemoryBudget& budget);
+
+/// @brief readExodus for one process: the budget is this machine's
+/// available memory (availableMemoryBytes).
 mesh::GlobalMesh readExodus(const std::string& path);
 
 /// @brief Parses an Exodus element type name (case-insensitive) with its

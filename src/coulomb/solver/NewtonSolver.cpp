@@ -7,6 +7,7 @@
 #include <limits>
 #include <iomanip>
 #include <memory>
+#include <sstream>
 
 #include <NOX_Observer.hpp>
 #include <NOX_Solver_Factory.H>
@@ -164,6 +165,8 @@ public:
     return status_;
   }
   NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  /// The ||f|| the last check asked for.
+  double target() const { return target_; }
   std::ostream& print(std::ostream& stream, int indent = 0) const override {
     for (int i = 0; i < indent; ++i) stream << ' ';
     return stream << status_ << " ||f|| = " << normF_ << " <= " << target_ << " (force-scaled)\n";
@@ -385,11 +388,13 @@ NewtonReport NewtonSolver::solve(Vector& u) {
   using namespace NOX::StatusTest;
   auto converged = Teuchos::rcp(new Combo(Combo::AND));
   // Contact/Convergence Criterion = Increment: the displacement increment instead of ||f||.
+  Teuchos::RCP<NormWRMS> incrementTest;
+  Teuchos::RCP<ScaledResidualTest> residualTest;
   if (contact_ && contact_->settings().criterion == contact::ConvergenceCriterion::Increment)
-    converged->addStatusTest(Teuchos::rcp(new NormWRMS(contact_->settings().incrementRelativeTolerance,
-                                                       contact_->settings().incrementAbsoluteTolerance)));
+    converged->addStatusTest(incrementTest = Teuchos::rcp(new NormWRMS(contact_->settings().incrementRelativeTolerance,
+                                                                       contact_->settings().incrementAbsoluteTolerance)));
   else
-    converged->addStatusTest(Teuchos::rcp(new ScaledResidualTest(*model_, settings_, group->getNormF())));
+    converged->addStatusTest(residualTest = Teuchos::rcp(new ScaledResidualTest(*model_, settings_, group->getNormF())));
   if (contact_) converged->addStatusTest(Teuchos::rcp(new ContactStatusTest(*contact_)));
   auto tests = Teuchos::rcp(new Combo(Combo::OR));
   tests->addStatusTest(Teuchos::rcp(new FiniteValue));
@@ -407,6 +412,25 @@ NewtonReport NewtonSolver::solve(Vector& u) {
   report.converged = status == NOX::StatusTest::Converged;
   report.failure = model_->lastFailure();
   if (!report.converged && contact_ && contact_->cyclePeriod() > 0) report.stopReason = contact_->cycleDescription();
+  if (!report.converged && report.stopReason.empty() && report.failure.empty()) {
+    // Out of iterations (or NOX gave up): which groups the last iterate missed.
+    std::ostringstream unmet;
+    unmet << std::setprecision(3);
+    const double normF = solver->getSolutionGroup().getNormF();
+    if (!std::isfinite(normF)) unmet << "the residual is not a finite number";
+    else if (residualTest && residualTest->getStatus() != Converged)
+      unmet << "the equilibrium residual (||f|| = " << normF << " > " << residualTest->target() << ")";
+    else if (incrementTest && incrementTest->getStatus() != Converged)
+      unmet << "the displacement increment (WRMS = " << incrementTest->getNormWRMS() << " > " << incrementTest->getTolerance() << ")";
+    const std::string contact = contact_ ? contact_->unmetCriteria() : "";
+    if (!contact.empty()) unmet << (unmet.tellp() > 0 ? ", " : "") << contact;
+    std::ostringstream reason;
+    reason << "after " << report.iterations.size() - 1 << " iterations";
+    if (static_cast<int>(report.iterations.size()) - 1 >= settings_.maximumIterations)
+      reason << " (the limit, 'Newton/Maximum Iterations' = " << settings_.maximumIterations << ")";
+    reason << " not met: " << (unmet.tellp() > 0 ? unmet.str() : std::string("the nonlinear solver's own tests"));
+    report.stopReason = reason.str();
+  }
 
   const auto& solution = dynamic_cast<const NOX::Thyra::Vector&>(solver->getSolutionGroup().getX());
   u.assign(*Extract::getConstTpetraVector(solution.getThyraRCPVector()));

@@ -15,8 +15,10 @@
 #include "coulomb/contact/ContactSettings.hpp"
 #include "coulomb/core/Error.hpp"
 #include "coulomb/core/Interrupt.hpp"
+#include "coulomb/core/Parallel.hpp"
 #include "coulomb/fem/Assembler.hpp"
 #include "coulomb/fem/DofMap.hpp"
+#include "coulomb/fem/MeshChecks.hpp"
 #include "coulomb/fem/ModelSettings.hpp"
 #include "coulomb/fem/RigidBodyModes.hpp"
 #include "coulomb/io/ExodusReader.hpp"
@@ -32,6 +34,12 @@ namespace coulomb::solver {
 namespace {
 
 const char* const kComponents[] = {"x", "y", "z"};
+
+std::string formatTime(double t) {
+  std::ostringstream out;
+  out << t;
+  return out.str();
+}
 
 std::vector<std::string> componentNames(const std::string& field, int dim) {
   std::vector<std::string> names;
@@ -70,7 +78,7 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
   settings_ = parseRunSettings(*deck, deckPath);
   if (!outputOverride.empty()) settings_.outputFile = outputOverride;
   if (!meshOverride.empty()) settings_.meshFile = meshOverride;
-  auto global = std::make_shared<mesh::GlobalMesh>(io::readExodus(settings_.meshFile));
+  auto global = std::make_shared<mesh::GlobalMesh>(io::readExodus(settings_.meshFile, memoryBudget(*comm_)));
   const auto model = fem::parseModelSettings(*deck, global->dimension);
   mesh_ = std::make_unique<mesh::Mesh>(global, comm_);
   dofs_ = std::make_unique<fem::DofMap>(*mesh_);
@@ -79,6 +87,13 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
   contact::loadFrictionFields(contactSettings, settings_.meshFile);
   if (!contactSettings.pairs.empty())
     contact_ = std::make_unique<contact::ContactModel>(*mesh_, dofs_->ownedMap(), contactSettings, model);
+  // Nodes at one point that no element joins: legitimate on contact
+  // surfaces (bodies meshed touching), an unmerged mesh elsewhere.
+  std::vector<char> onContactSurface(static_cast<std::size_t>(global->numNodes()), 0);
+  for (std::size_t p = 0; contact_ && p < contact_->pairs().size(); ++p)
+    for (long long node : contact_->pairs()[p]->interface().interfaceNodes())
+      onContactSurface[static_cast<std::size_t>(node)] = 1;
+  fem::checkCoincidentNodes(*global, onContactSurface, settings_.meshFile);
 
   if (contact_ && contact_->saddlePoint()) {
     // The saddle-point matrix (zero multiplier block on active normal rows)
@@ -295,8 +310,10 @@ RunSummary Simulation::run() {
                                   : std::string(", the smallest step (Final Time / Number of Steps / 2^cutbacks)"))
                           << " ('Load Stepping/Maximum Cutbacks' = " << settings_.maximumCutbacks << ")"
                           << (rejected.empty() ? std::string() : "; " + rejected)
-                          << "; the result file keeps the converged steps up to t = " << time << " as "
-                          << ResultWriter::partialPath(settings_.outputFile));
+                          << "; the result file keeps "
+                          << (summary.steps == 0 ? std::string("no converged step")
+                                                 : "the converged steps up to t = " + formatTime(time))
+                          << " as " << ResultWriter::partialPath(settings_.outputFile));
       if (console_) *console_ << "  cutting the step: next dt = " << steps.nextTime() - time << "\n";
       if (contact_) contact_->restoreStep();
       continue;

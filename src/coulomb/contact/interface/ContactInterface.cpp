@@ -14,13 +14,15 @@
 
 #include "coulomb/core/Error.hpp"
 #include "coulomb/fem/FaceTopology.hpp"
+#include "coulomb/fem/MeshChecks.hpp"
 
 namespace coulomb::contact {
 namespace {
 
 /// Faces of one side set, duplicates (same element and side) removed.
 std::vector<ContactFace> collectFaces(const mesh::Mesh& mesh, const mesh::SideSet& set, const std::string& shown,
-                                      const std::string& role, const std::string& what) {
+                                      const std::string& role, const std::string& what,
+                                      const fem::NodeElementAdjacency& adjacency) {
   const mesh::GlobalMesh& global = mesh.global();
   std::vector<ContactFace> faces;
   std::set<std::pair<long long, int>> seen;
@@ -42,6 +44,13 @@ std::vector<ContactFace> collectFaces(const mesh::Mesh& mesh, const mesh::SideSe
       throw Error(what + ": " + role + " side set '" + shown + "', element " + std::to_string(face.element + 1) +
                   ": " + e.what());
     }
+    // A face with an element on its other side is inside a body (a merged
+    // interface, or a set drawn through a body): it can never touch anything.
+    const long long across = fem::elementAcrossFace(global, adjacency, face.element, face.side);
+    COULOMB_REQUIRE(across < 0, what << ": " << role << " side set '" << shown << "': side " << face.side + 1
+                                     << " of element " << face.element + 1 << " is inside a body (element " << across + 1
+                                     << " is on its other side); a contact surface must be on the boundary (are the "
+                                        "two bodies' nodes merged?)");
     const int perElement = mesh::numNodes(block.cellType);
     const long long offset = (face.element - block.firstElement) * perElement;
     for (int a = 0; a < face.numNodes; ++a) face.nodes[a] = block.connectivity[offset + local[a]];
@@ -84,8 +93,9 @@ ContactInterface::ContactInterface(const mesh::Mesh& mesh, const std::string& sl
                                                   << masterSet << "' are the same set ('" << slaveName_
                                                   << "'); contact needs two different surfaces");
 
-  slaveFaces_ = collectFaces(mesh, slave, slaveName_, "slave", what);
-  masterFaces_ = collectFaces(mesh, master, masterName_, "master", what);
+  const auto adjacency = fem::nodeElementAdjacency(global);
+  slaveFaces_ = collectFaces(mesh, slave, slaveName_, "slave", what, adjacency);
+  masterFaces_ = collectFaces(mesh, master, masterName_, "master", what, adjacency);
   {
     std::set<std::pair<long long, int>> slaveSides;
     for (const ContactFace& f : slaveFaces_) slaveSides.insert({f.element, f.side});
