@@ -8,10 +8,12 @@
 #include "coulomb/io/ExodusWriter.hpp"
 
 #include <exodusII.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <set>
 #include <utility>
@@ -134,7 +136,18 @@ ExodusWriter::ExodusWriter(const std::string& path, const mesh::GlobalMesh& mesh
   // open for writing. 32-bit storage is exact up to 2^31 - 1 (validateMesh).
   const int mode = EX_CLOBBER | EX_LARGE_MODEL | EX_ALL_INT64_API;
   fileId_ = ex_create(path_.c_str(), mode, &cpuWordSize, &ioWordSize);
-  COULOMB_REQUIRE(fileId_ >= 0, "exodus output '" << path_ << "': cannot create the file (" << lastExodusError() << ")");
+  if (fileId_ < 0) {
+    // Say why in the user's words: the folder is missing or not writable
+    // (netCDF's own message names neither).
+    const std::filesystem::path folder = std::filesystem::absolute(path_).parent_path();
+    std::error_code ignored;
+    COULOMB_REQUIRE(std::filesystem::is_directory(folder, ignored),
+                    "exodus output '" << path_ << "': the folder '" << folder.string() << "' does not exist");
+    COULOMB_REQUIRE(::access(folder.c_str(), W_OK) == 0, "exodus output '" << path_ << "': the folder '"
+                                                                          << folder.string() << "' is not writable ("
+                                                                          << std::strerror(errno) << ")");
+    throw Error("exodus output '" + path_ + "': cannot create the file (" + lastExodusError() + ")");
+  }
   try {
     writeMesh(mesh, title);
     check(ex_update(fileId_), "flushing the mesh");
