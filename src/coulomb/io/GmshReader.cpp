@@ -52,7 +52,7 @@ int gmshDimension(int type) {
   }
 }
 
-/// Number of nodes of the first-order types we convert, 0 for the others.
+/// Number of nodes of the types we convert (first and second order), 0 for the others.
 int gmshSupportedNodes(int type) {
   switch (type) {
     case 15: return 1;
@@ -61,6 +61,13 @@ int gmshSupportedNodes(int type) {
     case 3: return 4;
     case 4: return 4;
     case 5: return 8;
+    case 8: return 3;
+    case 9: return 6;
+    case 10: return 9;
+    case 11: return 10;
+    case 12: return 27;
+    case 16: return 8;
+    case 17: return 20;
     default: return 0;
   }
 }
@@ -246,6 +253,9 @@ double det3(const Point& o, const Point& a, const Point& b, const Point& c) {  /
 /// Corner "Jacobians" of a cell: all positive iff the cell is valid and
 /// positively oriented (for simplices there is one, the signed measure).
 std::vector<double> cornerJacobians(CellType type, const std::vector<Point>& x) {
+  // A quadratic cell by its corners (they lead its node list): a cell whose
+  // straight-sided corner cell is inverted is flipped like that cell.
+  if (mesh::isQuadratic(type)) return cornerJacobians(mesh::linearType(type), x);
   switch (type) {
     case CellType::Tri3: return {cross2(x[0], x[1], x[2])};
     case CellType::Quad4: {
@@ -262,20 +272,47 @@ std::vector<double> cornerJacobians(CellType type, const std::vector<Point>& x) 
       for (int i = 0; i < 8; ++i) j[i] = det3(x[i], x[corner[i][0]], x[corner[i][1]], x[corner[i][2]]);
       return j;
     }
+    default: break;
   }
   return {};
 }
 
-/// Node permutation that reverses a cell's orientation.
-const std::vector<int>& flipPermutation(CellType type) {
-  static const std::vector<int> tri{0, 2, 1}, quad{0, 3, 2, 1}, tet{0, 2, 1, 3}, hex{0, 3, 2, 1, 4, 7, 6, 5};
-  switch (type) {
-    case CellType::Tri3: return tri;
-    case CellType::Quad4: return quad;
-    case CellType::Tet4: return tet;
-    case CellType::Hex8: break;
+/// Sorted corner set of node `a` of a cell (mesh::nodeCorners).
+std::vector<int> sortedCorners(const mesh::NodeCorners& c) {
+  std::vector<int> v(c.corners.begin(), c.corners.begin() + c.count);
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+/// The permutation p (new node i = old node p[i]) of a cell's nodes that
+/// moves its corners by `corners` (new corner i = old corner corners[i]):
+/// each higher-order node goes where the image of its corner set is.
+std::vector<int> extendCornerPermutation(CellType type, const std::vector<int>& corners) {
+  const int n = mesh::numNodes(type), nc = mesh::numCorners(type);
+  std::vector<int> p(corners);
+  for (int a = nc; a < n; ++a) {  // new node a: its corners (new numbers), as old numbers
+    mesh::NodeCorners want = mesh::nodeCorners(type, a);
+    for (int k = 0; k < want.count; ++k) want.corners[k] = corners[static_cast<std::size_t>(want.corners[k])];
+    const std::vector<int> key = sortedCorners(want);
+    int found = -1;
+    for (int b = nc; b < n && found < 0; ++b)
+      if (sortedCorners(mesh::nodeCorners(type, b)) == key) found = b;
+    p.push_back(found);
   }
-  return hex;
+  return p;
+}
+
+/// Node permutation that reverses a cell's orientation (corners mirrored,
+/// higher-order nodes following their corners).
+std::vector<int> flipPermutation(CellType type) {
+  static const std::vector<int> tri{0, 2, 1}, quad{0, 3, 2, 1}, tet{0, 2, 1, 3}, hex{0, 3, 2, 1, 4, 7, 6, 5};
+  switch (mesh::linearType(type)) {
+    case CellType::Tri3: return extendCornerPermutation(type, tri);
+    case CellType::Quad4: return extendCornerPermutation(type, quad);
+    case CellType::Tet4: return extendCornerPermutation(type, tet);
+    default: break;
+  }
+  return extendCornerPermutation(type, hex);
 }
 
 CellType cellTypeOf(int gmshType) {
@@ -283,15 +320,52 @@ CellType cellTypeOf(int gmshType) {
     case 2: return CellType::Tri3;
     case 3: return CellType::Quad4;
     case 4: return CellType::Tet4;
+    case 9: return CellType::Tri6;
+    case 10: return CellType::Quad9;
+    case 11: return CellType::Tet10;
+    case 12: return CellType::Hex27;
+    case 16: return CellType::Quad8;
+    case 17: return CellType::Hex20;
     default: return CellType::Hex8;
   }
 }
 
-using FaceKey = std::array<long long, 4>;  // sorted node numbers, padded with -1
+/// Exodus node i of a gmsh cell is gmsh node gmshToExodus(type)[i]. gmsh
+/// numbers corners as Exodus does but its higher-order nodes differently for
+/// TET10, HEX20 and HEX27 (gmsh manual, "Node ordering"): each is listed here
+/// by the corners it sits between, and matched against mesh::nodeCorners.
+std::vector<int> gmshToExodus(CellType type) {
+  using Set = std::vector<int>;
+  static const std::vector<Set> kTet10{{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}};
+  static const std::vector<Set> kHex{{0, 1}, {0, 3}, {0, 4}, {1, 2}, {1, 5}, {2, 3}, {2, 6}, {3, 7},
+                                     {4, 5}, {4, 7}, {5, 6}, {6, 7},
+                                     // HEX27 only: face centres, then the cell centre
+                                     {0, 1, 2, 3}, {0, 1, 4, 5}, {0, 3, 4, 7}, {1, 2, 5, 6}, {2, 3, 6, 7},
+                                     {4, 5, 6, 7}, {0, 1, 2, 3, 4, 5, 6, 7}};
+  const int n = mesh::numNodes(type), nc = mesh::numCorners(type);
+  std::vector<int> p(static_cast<std::size_t>(n));
+  for (int i = 0; i < n; ++i) p[static_cast<std::size_t>(i)] = i;
+  const std::vector<Set>* table = type == CellType::Tet10 ? &kTet10
+                                  : (type == CellType::Hex20 || type == CellType::Hex27) ? &kHex
+                                                                                         : nullptr;
+  if (!table) return p;  // TRI6, QUAD8, QUAD9: the Exodus order
+  for (int a = nc; a < n; ++a) {
+    const Set key = sortedCorners(mesh::nodeCorners(type, a));
+    for (int g = 0; g < n - nc; ++g) {
+      Set s = (*table)[static_cast<std::size_t>(g)];
+      std::sort(s.begin(), s.end());
+      if (s == key) p[static_cast<std::size_t>(a)] = nc + g;
+    }
+  }
+  return p;
+}
+
+using FaceKey = std::array<long long, mesh::kMaxFaceNodes>;  // sorted node numbers, padded with -1
 
 FaceKey faceKey(std::vector<long long> nodes) {
   std::sort(nodes.begin(), nodes.end());
-  FaceKey key{-1, -1, -1, -1};
+  FaceKey key;
+  key.fill(-1);
   std::copy(nodes.begin(), nodes.end(), key.begin());
   return key;
 }
@@ -359,23 +433,25 @@ private:
     std::vector<char> used(file_.nodeTags.size(), 0);
     for (const auto& [tag, elements] : groups) {
       const int type = elements.front()->type;
-      COULOMB_REQUIRE(gmshSupportedNodes(type) > 0, prefix() << groupLabel(dim_, tag) << " has "
-                                                             << gmshTypeName(type) << " elements; supported: "
-                                                             << (dim_ == 2 ? "3-node triangles, 4-node quadrangles"
-                                                                           : "4-node tetrahedra, 8-node hexahedra")
-                                                             << " (set Mesh.ElementOrder = 1)");
+      COULOMB_REQUIRE(gmshSupportedNodes(type) > 0 && gmshDimension(type) >= 2,
+                      prefix() << groupLabel(dim_, tag) << " has " << gmshTypeName(type)
+                               << " elements; supported: "
+                               << (dim_ == 2 ? "3- and 6-node triangles, 4-, 8- and 9-node quadrangles"
+                                             : "4- and 10-node tetrahedra, 8-, 20- and 27-node hexahedra")
+                               << " (Mesh.ElementOrder 1 or 2)");
       mesh::ElementBlock block;
       block.name = nameOf(dim_, tag);
       block.id = tag;
       block.cellType = cellTypeOf(type);
       block.firstElement = numCells_;
+      const std::vector<int> exodusOrder = gmshToExodus(block.cellType);
       for (const GmshElement* e : elements) {
         COULOMB_REQUIRE(e->type == type, prefix() << groupLabel(dim_, tag) << " mixes " << gmshTypeName(type)
                                                   << " and " << gmshTypeName(e->type)
                                                   << " elements; an element block holds one cell type: put them in "
                                                   << "separate physical groups");
         std::vector<std::size_t> cell;
-        for (long long n : e->nodes) cell.push_back(node(n, e->tag));
+        for (int g : exodusOrder) cell.push_back(node(e->nodes[static_cast<std::size_t>(g)], e->tag));
         orient(block.cellType, cell, e->tag, tag);
         for (std::size_t n : cell) used[n] = 1;
         cells.push_back(std::move(cell));
@@ -447,9 +523,12 @@ private:
       if (e.physical == 0) continue;
       const int d = gmshDimension(e.type);
       if (d == dim_ - 1) {
-        const bool ok = dim_ == 2 ? e.type == 1 : (e.type == 2 || e.type == 3);
+        const bool ok = dim_ == 2 ? (e.type == 1 || e.type == 8)
+                                  : (e.type == 2 || e.type == 3 || e.type == 9 || e.type == 10 || e.type == 16);
         COULOMB_REQUIRE(ok, prefix() << groupLabel(d, e.physical) << " has " << gmshTypeName(e.type)
-                                     << " elements; only first-order boundary elements are supported");
+                                     << " elements; supported boundary elements: "
+                                     << (dim_ == 2 ? "2- and 3-node lines"
+                                                   : "3- and 6-node triangles, 4-, 8- and 9-node quadrangles"));
         boundary[e.physical].push_back(&e);
       } else if (d < dim_ - 1) {
         COULOMB_REQUIRE(gmshSupportedNodes(e.type) > 0, prefix() << groupLabel(d, e.physical) << " has "
@@ -552,16 +631,55 @@ private:
 
 }  // namespace
 
+namespace {
+
+using SideTable = std::vector<std::vector<int>>;
+
+/// Sides of a quadratic cell: the linear side's corners, then every
+/// higher-order node whose corners all lie on that side (edge nodes, the
+/// HEX27 face centre) in node order.
+SideTable quadraticSides(CellType type, const SideTable& linear) {
+  SideTable sides;
+  for (const auto& corners : linear) {
+    std::vector<int> side(corners);
+    for (int a = mesh::numCorners(type); a < mesh::numNodes(type); ++a) {
+      const mesh::NodeCorners c = mesh::nodeCorners(type, a);
+      bool on = true;
+      for (int k = 0; k < c.count && on; ++k)
+        on = std::find(corners.begin(), corners.end(), c.corners[k]) != corners.end();
+      if (on) side.push_back(a);
+    }
+    sides.push_back(std::move(side));
+  }
+  return sides;
+}
+
+}  // namespace
+
 const std::vector<int>& exodusSideNodes(CellType type, int side) {
-  static const std::vector<std::vector<int>> quad{{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  static const std::vector<std::vector<int>> tri{{0, 1}, {1, 2}, {2, 0}};
-  static const std::vector<std::vector<int>> hex{{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6},
-                                                 {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
-  static const std::vector<std::vector<int>> tet{{0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 2, 1}};
-  const auto& table = type == CellType::Quad4 ? quad : type == CellType::Tri3 ? tri : type == CellType::Hex8 ? hex : tet;
-  COULOMB_REQUIRE(side >= 0 && side < static_cast<int>(table.size()),
+  static const SideTable quad{{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  static const SideTable tri{{0, 1}, {1, 2}, {2, 0}};
+  static const SideTable hex{{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
+  static const SideTable tet{{0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 2, 1}};
+  static const SideTable quad8 = quadraticSides(CellType::Quad8, quad), quad9 = quadraticSides(CellType::Quad9, quad),
+                         tri6 = quadraticSides(CellType::Tri6, tri), hex20 = quadraticSides(CellType::Hex20, hex),
+                         hex27 = quadraticSides(CellType::Hex27, hex), tet10 = quadraticSides(CellType::Tet10, tet);
+  const SideTable* table = &tet;
+  switch (type) {
+    case CellType::Quad4: table = &quad; break;
+    case CellType::Tri3: table = &tri; break;
+    case CellType::Hex8: table = &hex; break;
+    case CellType::Tet4: table = &tet; break;
+    case CellType::Quad8: table = &quad8; break;
+    case CellType::Quad9: table = &quad9; break;
+    case CellType::Tri6: table = &tri6; break;
+    case CellType::Hex20: table = &hex20; break;
+    case CellType::Hex27: table = &hex27; break;
+    case CellType::Tet10: table = &tet10; break;
+  }
+  COULOMB_REQUIRE(side >= 0 && side < static_cast<int>(table->size()),
                   "side " << side << " of a " << mesh::toString(type) << " cell does not exist");
-  return table[static_cast<std::size_t>(side)];
+  return (*table)[static_cast<std::size_t>(side)];
 }
 
 mesh::GlobalMesh readGmsh(const std::string& path) {
