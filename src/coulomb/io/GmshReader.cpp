@@ -17,6 +17,7 @@
 #include <unordered_map>
 
 #include "coulomb/core/Error.hpp"
+#include "coulomb/io/GmshNodeOrder.hpp"
 
 namespace coulomb::io {
 namespace {
@@ -277,43 +278,6 @@ std::vector<double> cornerJacobians(CellType type, const std::vector<Point>& x) 
   return {};
 }
 
-/// Sorted corner set of node `a` of a cell (mesh::nodeCorners).
-std::vector<int> sortedCorners(const mesh::NodeCorners& c) {
-  std::vector<int> v(c.corners.begin(), c.corners.begin() + c.count);
-  std::sort(v.begin(), v.end());
-  return v;
-}
-
-/// The permutation p (new node i = old node p[i]) of a cell's nodes that
-/// moves its corners by `corners` (new corner i = old corner corners[i]):
-/// each higher-order node goes where the image of its corner set is.
-std::vector<int> extendCornerPermutation(CellType type, const std::vector<int>& corners) {
-  const int n = mesh::numNodes(type), nc = mesh::numCorners(type);
-  std::vector<int> p(corners);
-  for (int a = nc; a < n; ++a) {  // new node a: its corners (new numbers), as old numbers
-    mesh::NodeCorners want = mesh::nodeCorners(type, a);
-    for (int k = 0; k < want.count; ++k) want.corners[k] = corners[static_cast<std::size_t>(want.corners[k])];
-    const std::vector<int> key = sortedCorners(want);
-    int found = -1;
-    for (int b = nc; b < n && found < 0; ++b)
-      if (sortedCorners(mesh::nodeCorners(type, b)) == key) found = b;
-    p.push_back(found);
-  }
-  return p;
-}
-
-/// Node permutation that reverses a cell's orientation (corners mirrored,
-/// higher-order nodes following their corners).
-std::vector<int> flipPermutation(CellType type) {
-  static const std::vector<int> tri{0, 2, 1}, quad{0, 3, 2, 1}, tet{0, 2, 1, 3}, hex{0, 3, 2, 1, 4, 7, 6, 5};
-  switch (mesh::linearType(type)) {
-    case CellType::Tri3: return extendCornerPermutation(type, tri);
-    case CellType::Quad4: return extendCornerPermutation(type, quad);
-    case CellType::Tet4: return extendCornerPermutation(type, tet);
-    default: break;
-  }
-  return extendCornerPermutation(type, hex);
-}
 
 CellType cellTypeOf(int gmshType) {
   switch (gmshType) {
@@ -330,35 +294,6 @@ CellType cellTypeOf(int gmshType) {
   }
 }
 
-/// Exodus node i of a gmsh cell is gmsh node gmshToExodus(type)[i]. gmsh
-/// numbers corners as Exodus does but its higher-order nodes differently for
-/// TET10, HEX20 and HEX27 (gmsh manual, "Node ordering"): each is listed here
-/// by the corners it sits between, and matched against mesh::nodeCorners.
-std::vector<int> gmshToExodus(CellType type) {
-  using Set = std::vector<int>;
-  static const std::vector<Set> kTet10{{0, 1}, {1, 2}, {2, 0}, {3, 0}, {3, 2}, {3, 1}};
-  static const std::vector<Set> kHex{{0, 1}, {0, 3}, {0, 4}, {1, 2}, {1, 5}, {2, 3}, {2, 6}, {3, 7},
-                                     {4, 5}, {4, 7}, {5, 6}, {6, 7},
-                                     // HEX27 only: face centres, then the cell centre
-                                     {0, 1, 2, 3}, {0, 1, 4, 5}, {0, 3, 4, 7}, {1, 2, 5, 6}, {2, 3, 6, 7},
-                                     {4, 5, 6, 7}, {0, 1, 2, 3, 4, 5, 6, 7}};
-  const int n = mesh::numNodes(type), nc = mesh::numCorners(type);
-  std::vector<int> p(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) p[static_cast<std::size_t>(i)] = i;
-  const std::vector<Set>* table = type == CellType::Tet10 ? &kTet10
-                                  : (type == CellType::Hex20 || type == CellType::Hex27) ? &kHex
-                                                                                         : nullptr;
-  if (!table) return p;  // TRI6, QUAD8, QUAD9: the Exodus order
-  for (int a = nc; a < n; ++a) {
-    const Set key = sortedCorners(mesh::nodeCorners(type, a));
-    for (int g = 0; g < n - nc; ++g) {
-      Set s = (*table)[static_cast<std::size_t>(g)];
-      std::sort(s.begin(), s.end());
-      if (s == key) p[static_cast<std::size_t>(a)] = nc + g;
-    }
-  }
-  return p;
-}
 
 using FaceKey = std::array<long long, mesh::kMaxFaceNodes>;  // sorted node numbers, padded with -1
 
@@ -631,30 +566,7 @@ private:
 
 }  // namespace
 
-namespace {
-
 using SideTable = std::vector<std::vector<int>>;
-
-/// Sides of a quadratic cell: the linear side's corners, then every
-/// higher-order node whose corners all lie on that side (edge nodes, the
-/// HEX27 face centre) in node order.
-SideTable quadraticSides(CellType type, const SideTable& linear) {
-  SideTable sides;
-  for (const auto& corners : linear) {
-    std::vector<int> side(corners);
-    for (int a = mesh::numCorners(type); a < mesh::numNodes(type); ++a) {
-      const mesh::NodeCorners c = mesh::nodeCorners(type, a);
-      bool on = true;
-      for (int k = 0; k < c.count && on; ++k)
-        on = std::find(corners.begin(), corners.end(), c.corners[k]) != corners.end();
-      if (on) side.push_back(a);
-    }
-    sides.push_back(std::move(side));
-  }
-  return sides;
-}
-
-}  // namespace
 
 const std::vector<int>& exodusSideNodes(CellType type, int side) {
   static const SideTable quad{{0, 1}, {1, 2}, {2, 3}, {3, 0}};
