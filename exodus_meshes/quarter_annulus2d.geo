@@ -4,6 +4,8 @@
 // wall and 2n around the quarter circle.
 // Make with: scripts/make_mesh exodus_meshes/quarter_annulus2d.geo quarter_annulus2d.e -setnumber n 8
 DefineConstant[ n = {4, Min 1, Name "n: elements through the wall"} ];
+// tri = 1: triangles (each structured quadrilateral split in two) instead of quadrilaterals
+DefineConstant[ tri = {0, Choices {0, 1}, Name "tri: triangles"} ];
 
 Point(1) = {0, 0, 0};  // centre
 Point(2) = {1, 0, 0};
@@ -20,7 +22,9 @@ Plane Surface(1) = {1};
 Transfinite Curve{1, 3} = n + 1;
 Transfinite Curve{2, 4} = 2 * n + 1;
 Transfinite Surface{1};
-Recombine Surface{1};
+If (tri == 0)
+  Recombine Surface{1};
+EndIf
 
 Physical Surface("body", 1) = {1};
 Physical Curve("symmetry_y", 2) = {1};  // on the line y = 0 (u_y = 0)

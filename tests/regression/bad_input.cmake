@@ -59,7 +59,7 @@ coulomb_bad_input(unknown_node_set "'Dirichlet Conditions/symmetry z/Node Set'.*
 coulomb_bad_input(unknown_side_set "'Neumann Conditions/top pressure/Side Set'.*side ?set 'upper'")
 
 # Meshes Coulomb cannot use (made from CDL text with ncgen at test time).
-coulomb_bad_input(unsupported_element_hex20 "hex20_block[.]e.*'quadratic'.*HEX20" CDL hex20_block.cdl)
+coulomb_bad_input(unsupported_element_wedge6 "wedge6_block[.]e.*'prism'.*WEDGE6" CDL wedge6_block.cdl)
 coulomb_bad_input(unsupported_element_truss "truss_block[.]e.*'tie'.*TRUSS" CDL truss_block.cdl)
 coulomb_bad_input(inverted_element "element 2 of block 'body'.*inverted" CDL inverted_hex8.cdl)
 coulomb_bad_input(mesh_zero_volume_element "element 2 of block 'body' has zero volume" NP 1 2 CDL zero_volume_hex8.cdl)
@@ -90,6 +90,9 @@ coulomb_bad_input(contact_friction_huge_coefficient "'Contact/Pairs/punch/Fricti
 coulomb_bad_input(contact_surface_inside_body
                   "Contact/Pairs/joint: slave side set 'left_face': side 2 of element 1 is inside a body [(]element 2"
                   NP 1 2 CDL contact_inside_body.cdl)
+coulomb_bad_input(contact_quadratic_faces
+                  "Contact/Pairs/stack.*slave side set 'upper_bottom'.*block 'upper'.*QUAD8.*contact on quadratic faces [(]LINE3[)] is not supported yet"
+                  NP 1 2 CDL contact_quad8_faces.cdl)
 coulomb_bad_input(contact_friction_tresca_zero_threshold "'Contact/Pairs/punch/Tresca Threshold' must be > 0")
 coulomb_bad_input(contact_friction_unknown_law "'Contact/Pairs/punch/Friction Law'")
 coulomb_bad_input(contact_friction_zero_tangent_factor "'Contact/Pairs/punch/Tangent Factor'")

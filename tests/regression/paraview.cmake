@@ -56,3 +56,11 @@ add_test(NAME ParaView.block_compression.check
                  ${CMAKE_CURRENT_SOURCE_DIR}/paraview_check.py ${COULOMB_PARAVIEW_WORKDIR}/block_compression.e)
 set_tests_properties(ParaView.block_compression.check PROPERTIES
   TIMEOUT 300 SKIP_RETURN_CODE 77 FIXTURES_REQUIRED ParaViewBlockCompression LABELS "regression;paraview")
+
+# The quadratic meshes of the `meshes` target as ParaView sees them: quadratic
+# VTK cells (paraview_quadratic.py); SKIPPED when pvpython is absent.
+add_test(NAME ParaView.quadratic_cells
+         COMMAND /bin/sh -c "if ! command -v pvpython >/dev/null 2>&1; then echo 'SKIPPED: pvpython not installed'; exit 77; fi; exec pvpython \"$0\" \"$@\""
+                 ${CMAKE_CURRENT_SOURCE_DIR}/paraview_quadratic.py ${PROJECT_SOURCE_DIR}/exodus_meshes)
+set_tests_properties(ParaView.quadratic_cells PROPERTIES
+  TIMEOUT 120 SKIP_RETURN_CODE 77 LABELS "regression;paraview")

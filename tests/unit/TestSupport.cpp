@@ -35,7 +35,7 @@ void writeOnRoot(const std::string& path, const std::string& text) {
 
 std::string shippedMesh(const std::string& file) { return std::string(COULOMB_SOURCE_DIR) + "/exodus_meshes/" + file; }
 
-void writeDistortedCopy(const std::string& source, const std::string& target, double amplitude) {
+void writeDistortedCopy(const std::string& source, const std::string& target, double amplitude, bool straightEdges) {
   const auto comm = worldComm();
   if (comm->getRank() == 0) {
     mesh::GlobalMesh m = io::readExodus(source);
@@ -67,6 +67,19 @@ void writeDistortedCopy(const std::string& source, const std::string& target, do
         const double shift = amplitude * size[n] * random();
         if (!onBoundary[n]) m.coordinates[n * dim + d] += shift;
       }
+    for (const auto& block : m.blocks) {
+      const int k = mesh::numNodes(block.cellType);
+      for (long long e = 0; e < block.numElements() && straightEdges; ++e)
+        for (int a = mesh::numCorners(block.cellType); a < k; ++a) {
+          const mesh::NodeCorners c = mesh::nodeCorners(block.cellType, a);
+          const long long node = block.connectivity[e * k + a];
+          for (int d = 0; d < dim; ++d) {
+            double mean = 0;
+            for (int j = 0; j < c.count; ++j) mean += m.coordinates[block.connectivity[e * k + c.corners[j]] * dim + d];
+            m.coordinates[node * dim + d] = mean / c.count;
+          }
+        }
+    }
     io::ExodusWriter writer(target, m, {}, {}, "distorted copy of " + source);
     writer.close();
   }

@@ -22,7 +22,11 @@ void writeOnRoot(const std::string& path, const std::string& text);
 std::string shippedMesh(const std::string& file);
 /// Rank 0 writes a copy of `source` whose nodes outside every node set are
 /// moved by up to `amplitude` × the local mesh size (deterministic pseudo-random).
-void writeDistortedCopy(const std::string& source, const std::string& target, double amplitude);
+/// Mid-side nodes of quadratic cells move too (their edges curve), unless
+/// `straightEdges`: then every higher-order node is put back at the mean of its
+/// corners (mesh::nodeCorners), and the cells stay straight-sided.
+void writeDistortedCopy(const std::string& source, const std::string& target, double amplitude,
+                        bool straightEdges = false);
 
 /// A deck: materials/blocks for one block "body", then `body` (more sublists).
 std::string deckXml(const std::string& meshFile, const std::string& material, const std::string& body);

@@ -31,7 +31,7 @@ TEST(FemFaceTopology, SideNodesFollowTheExodusConvention) {
   for (const auto& c : cases) {
     ASSERT_EQ(static_cast<int>(c.table.size()), mesh::numFaces(c.cell));
     for (int s = 0; s < mesh::numFaces(c.cell); ++s) {
-      std::array<int, 4> nodes;
+      std::array<int, mesh::kMaxFaceNodes> nodes;
       const int count = faceLocalNodes(c.cell, s, nodes);
       ASSERT_EQ(count, static_cast<int>(c.table[s].size()));
       EXPECT_EQ(count, mesh::numNodes(faceType(c.cell, s)));
@@ -43,9 +43,38 @@ TEST(FemFaceTopology, SideNodesFollowTheExodusConvention) {
   }
 }
 
+TEST(FemFaceTopology, QuadraticSidesFollowTheExodusConvention) {
+  // HEX27 sides as published with SEACAS (Ioss), 1-based; side 4 starts at its
+  // corner 4 like the HEX8 side above (the same cycle). HEX20: the first 8.
+  const std::vector<std::vector<int>> hex27 = {
+      {1, 2, 6, 5, 9, 14, 17, 13, 26},  {2, 3, 7, 6, 10, 15, 18, 14, 25}, {3, 4, 8, 7, 11, 16, 19, 15, 27},
+      {4, 1, 5, 8, 12, 13, 20, 16, 24}, {1, 4, 3, 2, 12, 11, 10, 9, 22},  {5, 6, 7, 8, 17, 18, 19, 20, 23}};
+  const std::vector<std::vector<int>> tet10 = {
+      {1, 2, 4, 5, 9, 8}, {2, 3, 4, 6, 10, 9}, {1, 4, 3, 8, 10, 7}, {1, 3, 2, 7, 6, 5}};
+  const std::vector<std::vector<int>> quad9 = {{1, 2, 5}, {2, 3, 6}, {3, 4, 7}, {4, 1, 8}};
+  const std::vector<std::vector<int>> tri6 = {{1, 2, 4}, {2, 3, 5}, {3, 1, 6}};
+  const struct {
+    CellType cell;
+    const std::vector<std::vector<int>>& table;
+    int nodes;
+    FaceType face;
+  } cases[] = {{CellType::Hex27, hex27, 9, FaceType::Quad9}, {CellType::Hex20, hex27, 8, FaceType::Quad8},
+               {CellType::Tet10, tet10, 6, FaceType::Tri6},  {CellType::Quad9, quad9, 3, FaceType::Line3},
+               {CellType::Quad8, quad9, 3, FaceType::Line3}, {CellType::Tri6, tri6, 3, FaceType::Line3}};
+  for (const auto& c : cases)
+    for (int s = 0; s < mesh::numFaces(c.cell); ++s) {
+      std::array<int, mesh::kMaxFaceNodes> nodes;
+      ASSERT_EQ(faceLocalNodes(c.cell, s, nodes), c.nodes);
+      EXPECT_EQ(faceType(c.cell, s), c.face);
+      for (int k = 0; k < c.nodes; ++k)
+        EXPECT_EQ(nodes[k], c.table[s][k] - 1) << mesh::toString(c.cell) << " side " << s + 1 << " node " << k;
+    }
+}
+
 TEST(FemFaceTopology, BadSideThrows) {
-  std::array<int, 4> nodes;
-  for (CellType cell : {CellType::Quad4, CellType::Tri3, CellType::Hex8, CellType::Tet4}) {
+  std::array<int, mesh::kMaxFaceNodes> nodes;
+  for (CellType cell : {CellType::Quad4, CellType::Tri3, CellType::Hex8, CellType::Tet4, CellType::Quad8,
+                        CellType::Hex27, CellType::Tet10}) {
     EXPECT_THROW(faceLocalNodes(cell, -1, nodes), coulomb::Error);
     EXPECT_THROW(faceLocalNodes(cell, mesh::numFaces(cell), nodes), coulomb::Error);
     EXPECT_THROW(faceType(cell, mesh::numFaces(cell)), coulomb::Error);
@@ -57,7 +86,7 @@ class FemFaceKernel : public ::testing::Test {};
 TYPED_TEST_SUITE(FemFaceKernel, AllCells, CellNames);
 
 template <FaceType F>
-std::array<double, FaceTraits<F>::dim> areaVectorOfSide(const double* X, const std::array<int, 4>& nodes) {
+std::array<double, FaceTraits<F>::dim> areaVectorOfSide(const double* X, const std::array<int, mesh::kMaxFaceNodes>& nodes) {
   constexpr int d = FaceTraits<F>::dim;
   std::array<double, FaceTraits<F>::dofs> Xf{};
   for (int k = 0; k < FaceTraits<F>::nodes; ++k)
@@ -84,17 +113,11 @@ TYPED_TEST(FemFaceKernel, FaceNormalsPointOutOfTheCell) {
     }
     const auto cellCentroid = nodeAverage<d>(X, all.data(), C::nodes);
     for (int s = 0; s < mesh::numFaces(C::type); ++s) {
-      std::array<int, 4> nodes;
+      std::array<int, mesh::kMaxFaceNodes> nodes;
       const int count = faceLocalNodes(C::type, s, nodes);
       const auto faceCentroid = nodeAverage<d>(X, nodes.data(), count);
       std::array<double, d> n{};
-      if constexpr (d == 2) {
-        n = areaVectorOfSide<FaceType::Line2>(X.data(), nodes);
-      } else if (count == 3) {
-        n = areaVectorOfSide<FaceType::Tri3>(X.data(), nodes);
-      } else {
-        n = areaVectorOfSide<FaceType::Quad4>(X.data(), nodes);
-      }
+      visitFace<C::type>(s, [&](auto face) { n = areaVectorOfSide<decltype(face)::value>(X.data(), nodes); });
       double dot = 0.0;
       for (int i = 0; i < d; ++i) dot += n[i] * (faceCentroid[i] - cellCentroid[i]);
       EXPECT_GT(dot, 0.0) << mesh::toString(C::type) << " side " << s + 1 << " geometry " << geometry;

@@ -15,7 +15,10 @@ struct Shape {
 };
 using AllShapes = ::testing::Types<Shape<ReferenceShape::Line2>, Shape<ReferenceShape::Tri3>,
                                    Shape<ReferenceShape::Quad4>, Shape<ReferenceShape::Tet4>,
-                                   Shape<ReferenceShape::Hex8>>;
+                                   Shape<ReferenceShape::Hex8>, Shape<ReferenceShape::Line3>,
+                                   Shape<ReferenceShape::Tri6>, Shape<ReferenceShape::Quad8>,
+                                   Shape<ReferenceShape::Quad9>, Shape<ReferenceShape::Tet10>,
+                                   Shape<ReferenceShape::Hex20>, Shape<ReferenceShape::Hex27>>;
 
 template <typename T>
 class FemShapeFunctions : public ::testing::Test {};
@@ -25,7 +28,7 @@ TYPED_TEST_SUITE(FemShapeFunctions, AllShapes);
 template <ReferenceShape S>
 std::vector<std::array<double, ShapeTraits<S>::dim>> samplePoints() {
   constexpr int d = ShapeTraits<S>::dim;
-  const bool simplex = S == ReferenceShape::Tri3 || S == ReferenceShape::Tet4;
+  const bool simplex = isSimplex(S);
   std::vector<std::array<double, d>> pts;
   for (int k = 0; k < 7; ++k) {
     std::array<double, d> xi{};
@@ -91,6 +94,80 @@ TYPED_TEST(FemShapeFunctions, GradientsMatchCentralDifferences) {
       for (int a = 0; a < n; ++a) EXPECT_NEAR(dN[a * d + i], (Np[a] - Nm[a]) / (2 * h), 1e-9);
     }
   }
+}
+
+// The quadratic shapes (all of them hold the complete quadratics) interpolate
+// any quadratic polynomial exactly: sum_a N_a p(xi_a) = p(xi), and likewise its gradient.
+template <typename T>
+class FemQuadraticShapes : public ::testing::Test {};
+using QuadraticShapes = ::testing::Types<Shape<ReferenceShape::Line3>, Shape<ReferenceShape::Tri6>,
+                                         Shape<ReferenceShape::Quad8>, Shape<ReferenceShape::Quad9>,
+                                         Shape<ReferenceShape::Tet10>, Shape<ReferenceShape::Hex20>,
+                                         Shape<ReferenceShape::Hex27>>;
+TYPED_TEST_SUITE(FemQuadraticShapes, QuadraticShapes);
+
+TYPED_TEST(FemQuadraticShapes, QuadraticCompleteness) {
+  constexpr ReferenceShape S = TypeParam::value;
+  constexpr int n = ShapeTraits<S>::nodes, d = ShapeTraits<S>::dim;
+  // p(x) = 0.3 + sum_i c_i x_i + sum_{i<=j} q_ij x_i x_j with fixed, unrelated coefficients
+  auto p = [](const std::array<double, d>& x) {
+    double v = 0.3;
+    for (int i = 0; i < d; ++i) {
+      v += (0.7 - 0.4 * i) * x[i];
+      for (int j = i; j < d; ++j) v += (0.5 + 0.3 * i - 0.8 * j) * x[i] * x[j];
+    }
+    return v;
+  };
+  auto gradP = [](const std::array<double, d>& x, int k) {
+    double g = 0.7 - 0.4 * k;
+    for (int i = 0; i < d; ++i)
+      for (int j = i; j < d; ++j) {
+        const double q = 0.5 + 0.3 * i - 0.8 * j;
+        if (i == k) g += q * x[j];
+        if (j == k) g += q * x[i];
+      }
+    return g;
+  };
+  for (const auto& xi : samplePoints<S>()) {
+    std::array<double, n> N;
+    std::array<double, n * d> dN;
+    shapeValues<S>(xi, N);
+    shapeGradients<S>(xi, dN);
+    double v = 0.0;
+    std::array<double, d> g{};
+    for (int a = 0; a < n; ++a) {
+      const double pa = p(referenceNode<S>(a));
+      v += N[a] * pa;
+      for (int k = 0; k < d; ++k) g[k] += dN[a * d + k] * pa;
+    }
+    EXPECT_NEAR(v, p(xi), 1e-14);
+    for (int k = 0; k < d; ++k) EXPECT_NEAR(g[k], gradP(xi, k), 1e-13);
+  }
+}
+
+// Where the shape functions put the quadratic nodes agrees with where the mesh
+// layer says they are (mesh::nodeCorners, from which readers derive orders):
+// each node sits at the mean of its corners.
+template <mesh::CellType T>
+void expectNodesAtCornerMeans() {
+  constexpr ReferenceShape S = referenceShape(T);
+  constexpr int d = ShapeTraits<S>::dim;
+  for (int a = 0; a < ShapeTraits<S>::nodes; ++a) {
+    const mesh::NodeCorners c = mesh::nodeCorners(T, a);
+    std::array<double, d> mean{};
+    for (int k = 0; k < c.count; ++k)
+      for (int i = 0; i < d; ++i) mean[i] += referenceNode<S>(c.corners[k])[i] / c.count;
+    for (int i = 0; i < d; ++i) EXPECT_EQ(referenceNode<S>(a)[i], mean[i]) << mesh::toString(T) << " node " << a;
+  }
+}
+
+TEST(FemShapeFunctions, QuadraticNodesSitAtTheirCornerMeans) {
+  expectNodesAtCornerMeans<mesh::CellType::Quad8>();
+  expectNodesAtCornerMeans<mesh::CellType::Quad9>();
+  expectNodesAtCornerMeans<mesh::CellType::Tri6>();
+  expectNodesAtCornerMeans<mesh::CellType::Hex20>();
+  expectNodesAtCornerMeans<mesh::CellType::Hex27>();
+  expectNodesAtCornerMeans<mesh::CellType::Tet10>();
 }
 
 TEST(FemShapeFunctions, PhysicalGradientsOfAffineMapAreExact) {
@@ -166,6 +243,33 @@ TEST(FemQuadrature, GaussRulesExactToDegreeThreePerVariable) {
   EXPECT_GT(std::abs(integrateMonomial<ReferenceShape::Line2>({4, 0, 0}) - lineMoment(4)), 0.1);
 }
 
+TEST(FemQuadrature, ThreePointGaussRulesExactToDegreeFivePerVariable) {
+  for (int i = 0; i <= 5; ++i) {
+    EXPECT_NEAR(integrateMonomial<ReferenceShape::Line3>({i, 0, 0}), lineMoment(i), 1e-15);
+    for (int j = 0; j <= 5; ++j) {
+      EXPECT_NEAR(integrateMonomial<ReferenceShape::Quad8>({i, j, 0}), lineMoment(i) * lineMoment(j), 1e-15);
+      EXPECT_NEAR(integrateMonomial<ReferenceShape::Quad9>({i, j, 0}), lineMoment(i) * lineMoment(j), 1e-15);
+      for (int k = 0; k <= 5; ++k) {
+        const double exact = lineMoment(i) * lineMoment(j) * lineMoment(k);
+        EXPECT_NEAR(integrateMonomial<ReferenceShape::Hex20>({i, j, k}), exact, 1e-14);
+        EXPECT_NEAR(integrateMonomial<ReferenceShape::Hex27>({i, j, k}), exact, 1e-14);
+      }
+    }
+  }
+  // and not beyond: x^6 by 3-point Gauss is 6/25 instead of 2/7
+  EXPECT_GT(std::abs(integrateMonomial<ReferenceShape::Line3>({6, 0, 0}) - lineMoment(6)), 0.04);
+}
+
+TEST(FemQuadrature, Tri6RuleExactToTotalDegreeFour) {
+  for (int i = 0; i <= 4; ++i)
+    for (int j = 0; i + j <= 4; ++j)
+      EXPECT_NEAR(integrateMonomial<ReferenceShape::Tri6>({i, j, 0}), factorial(i) * factorial(j) / factorial(i + j + 2),
+                  1e-14)
+          << "x^" << i << " y^" << j;
+  // not degree 5 (x^5: 1/42 exactly)
+  EXPECT_GT(std::abs(integrateMonomial<ReferenceShape::Tri6>({5, 0, 0}) - 1.0 / 42.0), 1e-6);
+}
+
 TEST(FemQuadrature, SimplexRulesExactToTotalDegreeTwo) {
   // \int_simplex x^i y^j [z^k] = i! j! [k!] / (i + j [+ k] + dim)!
   for (int i = 0; i <= 2; ++i)
@@ -176,6 +280,18 @@ TEST(FemQuadrature, SimplexRulesExactToTotalDegreeTwo) {
         EXPECT_NEAR(integrateMonomial<ReferenceShape::Tet4>({i, j, k}),
                     factorial(i) * factorial(j) * factorial(k) / factorial(i + j + k + 3), 1e-15);
     }
+}
+
+TEST(FemQuadrature, Tet10RuleExactToTotalDegreeThree) {
+  for (int i = 0; i <= 3; ++i)
+    for (int j = 0; i + j <= 3; ++j)
+      for (int k = 0; i + j + k <= 3; ++k)
+        EXPECT_NEAR(integrateMonomial<ReferenceShape::Tet10>({i, j, k}),
+                    factorial(i) * factorial(j) * factorial(k) / factorial(i + j + k + 3), 1e-15)
+            << "x^" << i << " y^" << j << " z^" << k;
+  // not degree 4 (x^4: 4!/7! = 1/210)
+  EXPECT_GT(std::abs(integrateMonomial<ReferenceShape::Tet10>({4, 0, 0}) - 1.0 / 210.0), 1e-6);
+  for (double w : quadratureRule<ReferenceShape::Tet10>().weight) EXPECT_GT(w, 0.0);
 }
 
 TEST(FemQuadrature, TabulationMatchesShapeFunctions) {

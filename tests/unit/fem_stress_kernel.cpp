@@ -68,17 +68,30 @@ TYPED_TEST(FemStressKernel, ConstantStressIsRecoveredAtEveryNode) {
 
 TYPED_TEST(FemStressKernel, WeightsAreShapeFunctionIntegrals) {
   using C = TypeParam;
-  // Affine cell: \int N_a dV = V / nodes for each node; V = det M x reference volume (2D: x thickness).
+  // Affine cell: linear cells weigh by \int N_a dV = det M \int_ref N_a (2D: x thickness).
+  // Quadratic cells by \int N_a^2 dV: positive at every node; for QUAD9 and HEX27 the
+  // product of the 1D integrals of the squared quadratic Lagrange functions, 4/15 (ends)
+  // and 16/15 (middle).
   const auto X = distortedCoordinates<C::type>(0.0);
   const double M[3][3] = {{1.3, 0.2, -0.1}, {0.1, 0.9, 0.15}, {-0.05, 0.1, 1.1}};
-  const double V = C::dim == 2 ? (M[0][0] * M[1][1] - M[0][1] * M[1][0]) * (C::type == CellType::Quad4 ? 4.0 : 0.5) *
-                                     kThickness
-                               : det3(M) * (C::type == CellType::Hex8 ? 8.0 : 1.0 / 6.0);
+  const double detM = C::dim == 2 ? (M[0][0] * M[1][1] - M[0][1] * M[1][0]) * kThickness : det3(M);
   const typename C::Vec u{};
   std::array<double, C::nodes * 6> ws;
   std::array<double, C::nodes> w;
   ASSERT_EQ(cellNodalStress<C::type>(elastic(PlaneAssumption::PlaneStrain), X, u, ws, w), KernelStatus::Ok);
-  for (int a = 0; a < C::nodes; ++a) EXPECT_NEAR(w[a], V / C::nodes, 1e-14);
+  for (int a = 0; a < C::nodes; ++a) {
+    if (!mesh::isQuadratic(C::type)) {
+      EXPECT_NEAR(w[a], detM * referenceShapeIntegral(C::type, a), 1e-14);
+    } else if (C::type == CellType::Quad9 || C::type == CellType::Hex27) {
+      const mesh::NodeCorners c = mesh::nodeCorners(C::type, a);
+      const int middle = c.count == 1 ? 0 : c.count == 2 ? 1 : c.count == 4 ? 2 : 3;
+      double expected = detM;
+      for (int i = 0; i < C::dim; ++i) expected *= i < middle ? 16.0 / 15.0 : 4.0 / 15.0;
+      EXPECT_NEAR(w[a], expected, 1e-13) << "node " << a;
+    } else {
+      EXPECT_GT(w[a], 0.0) << "node " << a;
+    }
+  }
   EXPECT_EQ(maxAbs(ws), 0.0);
 }
 

@@ -27,7 +27,23 @@ struct Cell {
   using Vec = std::array<double, dofs>;
   using Mat = std::array<double, dofs * dofs>;
 };
-using AllCells = ::testing::Types<Cell<CellType::Quad4>, Cell<CellType::Tri3>, Cell<CellType::Hex8>, Cell<CellType::Tet4>>;
+using AllCells = ::testing::Types<Cell<CellType::Quad4>, Cell<CellType::Tri3>, Cell<CellType::Hex8>, Cell<CellType::Tet4>,
+                                  Cell<CellType::Quad8>, Cell<CellType::Quad9>, Cell<CellType::Tri6>,
+                                  Cell<CellType::Hex20>, Cell<CellType::Hex27>, Cell<CellType::Tet10>>;
+
+/// Calls visit(std::integral_constant<FaceType, F>) with the face type of side `side` of a T cell.
+template <CellType T, typename Visit>
+void visitFace(int side, Visit&& visit) {
+  switch (faceType(T, side)) {
+    case FaceType::Line2: if constexpr (CellTraits<T>::dim == 2) visit(std::integral_constant<FaceType, FaceType::Line2>{}); break;
+    case FaceType::Line3: if constexpr (CellTraits<T>::dim == 2) visit(std::integral_constant<FaceType, FaceType::Line3>{}); break;
+    case FaceType::Tri3: if constexpr (CellTraits<T>::dim == 3) visit(std::integral_constant<FaceType, FaceType::Tri3>{}); break;
+    case FaceType::Quad4: if constexpr (CellTraits<T>::dim == 3) visit(std::integral_constant<FaceType, FaceType::Quad4>{}); break;
+    case FaceType::Tri6: if constexpr (CellTraits<T>::dim == 3) visit(std::integral_constant<FaceType, FaceType::Tri6>{}); break;
+    case FaceType::Quad8: if constexpr (CellTraits<T>::dim == 3) visit(std::integral_constant<FaceType, FaceType::Quad8>{}); break;
+    case FaceType::Quad9: if constexpr (CellTraits<T>::dim == 3) visit(std::integral_constant<FaceType, FaceType::Quad9>{}); break;
+  }
+}
 
 struct CellNames {
   template <typename C>
@@ -46,6 +62,35 @@ std::array<double, CellTraits<T>::dofs> referenceCoordinates() {
     for (int i = 0; i < d; ++i) X[a * d + i] = xi[i];
   }
   return X;
+}
+
+/// \int N_a over the reference element, in closed form (not from the kernels' quadrature):
+/// linear cells measure/nodes; QUAD9/HEX27 products of the 1D integrals 1/3 (ends) and 4/3
+/// (middle); QUAD8 corners -1/3, edges 4/3; HEX20 corners -1, edges 4/3; TRI6 corners 0,
+/// edges 1/6; TET10 corners -1/120, edges 1/30.
+inline double referenceShapeIntegral(CellType t, int a) {
+  const bool corner = a < mesh::numCorners(t);
+  switch (t) {
+    case CellType::Quad4: return 1.0;
+    case CellType::Tri3: return 1.0 / 6.0;
+    case CellType::Hex8: return 1.0;
+    case CellType::Tet4: return 1.0 / 24.0;
+    case CellType::Quad8: return corner ? -1.0 / 3.0 : 4.0 / 3.0;
+    case CellType::Hex20: return corner ? -1.0 : 4.0 / 3.0;
+    case CellType::Tri6: return corner ? 0.0 : 1.0 / 6.0;
+    case CellType::Tet10: return corner ? -1.0 / 120.0 : 1.0 / 30.0;
+    case CellType::Quad9:
+    case CellType::Hex27: {
+      double v = 1.0;
+      const int d = mesh::spatialDimension(t);
+      const mesh::NodeCorners c = mesh::nodeCorners(t, a);
+      // a node between 2^k corners has k coordinates at 0 (middle), d - k at the ends
+      const int middle = c.count == 1 ? 0 : c.count == 2 ? 1 : c.count == 4 ? 2 : 3;
+      for (int i = 0; i < d; ++i) v *= i < middle ? 4.0 / 3.0 : 1.0 / 3.0;
+      return v;
+    }
+  }
+  return 0.0;
 }
 
 /// Deterministic pseudo-random number in [-1, 1] (no global state).
@@ -228,8 +273,9 @@ std::array<double, D> planarUnitNormal(const std::array<double, N>& Xf, int m) {
   if constexpr (D == 2) {
     n = {Xf[3] - Xf[1], -(Xf[2] - Xf[0])};
   } else {
-    // triangle: (x1-x0) x (x2-x0); quad: diagonals (x2-x0) x (x3-x1)
-    const int p0 = 0, p1 = m == 3 ? 1 : 2, q0 = m == 3 ? 0 : 1, q1 = m == 3 ? 2 : 3;
+    // triangle: (x1-x0) x (x2-x0); quad: diagonals (x2-x0) x (x3-x1) (corners lead quadratic faces)
+    const bool tri = m == 3 || m == 6;
+    const int p0 = 0, p1 = tri ? 1 : 2, q0 = tri ? 0 : 1, q1 = tri ? 2 : 3;
     double a[3], b[3];
     for (int i = 0; i < 3; ++i) {
       a[i] = Xf[p1 * 3 + i] - Xf[p0 * 3 + i];
@@ -245,7 +291,7 @@ std::array<double, D> planarUnitNormal(const std::array<double, N>& Xf, int m) {
 }
 
 template <FaceType F, CellType T>
-void addFaceForces(const std::array<double, CellTraits<T>::dofs>& X, const std::array<int, 4>& nodes,
+void addFaceForces(const std::array<double, CellTraits<T>::dofs>& X, const std::array<int, mesh::kMaxFaceNodes>& nodes,
                    const std::vector<double>& sigma, double thickness, FaceIntegration how,
                    std::array<double, CellTraits<T>::dofs>& f) {
   constexpr int d = CellTraits<T>::dim, m = FaceTraits<F>::nodes;
@@ -275,15 +321,9 @@ std::array<double, CellTraits<T>::dofs> boundaryForcesOfConstantStress(const std
                                                                        double thickness, FaceIntegration how) {
   std::array<double, CellTraits<T>::dofs> f{};
   for (int s = 0; s < mesh::numFaces(T); ++s) {
-    std::array<int, 4> nodes;
+    std::array<int, mesh::kMaxFaceNodes> nodes;
     faceLocalNodes(T, s, nodes);
-    if constexpr (CellTraits<T>::dim == 2) {
-      addFaceForces<FaceType::Line2, T>(X, nodes, sigma, thickness, how, f);
-    } else if (faceType(T, s) == FaceType::Tri3) {
-      addFaceForces<FaceType::Tri3, T>(X, nodes, sigma, thickness, how, f);
-    } else {
-      addFaceForces<FaceType::Quad4, T>(X, nodes, sigma, thickness, how, f);
-    }
+    visitFace<T>(s, [&](auto face) { addFaceForces<decltype(face)::value, T>(X, nodes, sigma, thickness, how, f); });
   }
   return f;
 }

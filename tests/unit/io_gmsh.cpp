@@ -111,7 +111,7 @@ double cellMeasure(const GlobalMesh& m, const coulomb::mesh::ElementBlock& b, lo
   std::vector<Vec> x;
   for (int i = 0; i < nn; ++i) x.push_back(point(m, b.connectivity[e * nn + i]));
   std::vector<double> parts;
-  switch (b.cellType) {
+  switch (coulomb::mesh::linearType(b.cellType)) {  // quadratic cells: the corners (they come first)
     case CellType::Tri3: parts = {0.5 * cross(sub(x[1], x[0]), sub(x[2], x[0]))[2]}; break;
     case CellType::Quad4:
       parts = {0.5 * cross(sub(x[1], x[0]), sub(x[2], x[0]))[2], 0.5 * cross(sub(x[2], x[0]), sub(x[3], x[0]))[2]};
@@ -122,6 +122,7 @@ double cellMeasure(const GlobalMesh& m, const coulomb::mesh::ElementBlock& b, lo
       for (const auto& k : t) parts.push_back(tetVolume(x[k[0]], x[k[1]], x[k[2]], x[k[3]]));
       break;
     }
+    default: break;
   }
   double sum = 0;
   for (double p : parts) {
@@ -233,6 +234,8 @@ struct GeoCase {
   double measure, measureTolerance;
   /// name -> predicate "node lies on this boundary part"
   std::map<std::string, std::function<bool(const Vec&)>> sets;
+  std::string gmshOptions = "";  ///< e.g. "-order 2"
+  bool straight = true;          ///< straight-edged: higher-order nodes sit at the mean of their corners
 };
 
 bool near(double a, double b) { return std::abs(a - b) < 1e-9; }
@@ -240,11 +243,11 @@ bool near(double a, double b) { return std::abs(a - b) < 1e-9; }
 void checkGeo(const GeoCase& c) {
   if (std::system("gmsh --version > /dev/null 2>&1") != 0)
     GTEST_SKIP() << "gmsh is not installed: skipping the .geo -> .msh -> Exodus round trip of " << c.geo;
-  const std::string stem = std::filesystem::path(c.geo).stem().string();
+  const std::string stem = std::filesystem::path(c.geo).stem().string() + "_" + coulomb::mesh::toString(c.type);
   const std::string msh = outputPath(stem + ".msh"), exo = outputPath(stem + ".e");
   std::filesystem::remove(msh);
   const std::string command = "gmsh -" + std::to_string(c.dim) + " -format msh22 -v 1 -setnumber n " +
-                              std::to_string(c.n) + " -o " + msh + " " + std::string(COULOMB_SOURCE_DIR) +
+                              std::to_string(c.n) + " " + c.gmshOptions + " -o " + msh + " " + std::string(COULOMB_SOURCE_DIR) +
                               "/exodus_meshes/" + c.geo + " > " + outputPath(stem + ".gmsh.log") + " 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
   {
@@ -268,6 +271,19 @@ void checkGeo(const GeoCase& c) {
   for (long long e = 0; e < m.blocks[0].numElements(); ++e) measure += cellMeasure(m, m.blocks[0], e, &allPositive);
   EXPECT_TRUE(allPositive) << "a cell (or sub-tetrahedron of a hex) has non-positive measure";
   EXPECT_NEAR(measure, c.measure, c.measureTolerance);
+  // gmsh's higher-order nodes converted to the Exodus order: on a straight-edged
+  // mesh each sits at the mean of the corners coulomb::mesh::nodeCorners names.
+  const auto& block = m.blocks[0];
+  const int perCell = coulomb::mesh::numNodes(block.cellType);
+  for (long long e = 0; e < block.numElements() && c.straight; ++e)
+    for (int a = coulomb::mesh::numCorners(block.cellType); a < perCell; ++a) {
+      const coulomb::mesh::NodeCorners corners = coulomb::mesh::nodeCorners(block.cellType, a);
+      Vec mean{0, 0, 0};
+      for (int k = 0; k < corners.count; ++k)
+        for (int d = 0; d < 3; ++d) mean[d] += point(m, block.connectivity[e * perCell + corners.corners[k]])[d] / corners.count;
+      const Vec x = point(m, block.connectivity[e * perCell + a]);
+      for (int d = 0; d < 3; ++d) EXPECT_NEAR(x[d], mean[d], 1e-12) << "element " << e + 1 << " node " << a + 1;
+    }
 
   // Side set nodes through the exodus library's own side numbering.
   int cpuWordSize = 8, ioWordSize = 0;
@@ -316,12 +332,12 @@ void checkGeo(const GeoCase& c) {
 
     int64_t count = 0, factors = 0;
     ASSERT_GE(ex_get_set_param(exoId, EX_SIDE_SET, side.id, &count, &factors), 0);
-    std::vector<int> perSide(count), sideNodes(count * 4);
+    std::vector<int> perSide(count), sideNodes(count * coulomb::mesh::kMaxFaceNodes);
     ASSERT_GE(ex_get_side_set_node_list(exoId, side.id, perSide.data(), sideNodes.data()), 0);
     std::set<long long> library;
     std::size_t offset = 0;
     for (int k = 0; k < count; ++k) {
-      EXPECT_EQ(perSide[k], c.dim == 2 ? 2 : (c.type == CellType::Hex8 ? 4 : 3));
+      EXPECT_EQ(perSide[k], static_cast<int>(coulomb::io::exodusSideNodes(c.type, 0).size()));
       for (int i = 0; i < perSide[k]; ++i) library.insert(sideNodes[offset + i] - 1);
       offset += perSide[k];
     }
@@ -359,6 +375,31 @@ TEST(GmshIo, Block3dHex) {
 
 TEST(GmshIo, Block3dTet) { checkGeo({"block3d_tet.geo", 3, 3, CellType::Tet4, -1, -1, 1.0, 1e-12, cubeSets()}); }
 
+// Order-2 meshes of the same scripts (what scripts/make_mesh -order 2 makes):
+// complete (QUAD9, TRI6, HEX27, TET10) and, with Mesh.SecondOrderIncomplete,
+// serendipity (QUAD8, HEX20).
+const std::string kOrder2 = "-order 2";
+const std::string kIncomplete = "-order 2 -string Mesh.SecondOrderIncomplete=1\\;";
+
+TEST(GmshIo, Block2dQuad9) {
+  checkGeo({"block2d.geo", 2, 3, CellType::Quad9, 13 * 7, 6 * 3, 2.0, 1e-12, rectangleSets(2, 1), kOrder2});
+}
+TEST(GmshIo, Block2dQuad8) {
+  checkGeo({"block2d.geo", 2, 3, CellType::Quad8, 13 * 7 - 18, 6 * 3, 2.0, 1e-12, rectangleSets(2, 1), kIncomplete});
+}
+TEST(GmshIo, Block2dTri6) {
+  checkGeo({"block2d_tri.geo", 2, 3, CellType::Tri6, 13 * 7, 2 * 6 * 3, 2.0, 1e-12, rectangleSets(2, 1), kOrder2});
+}
+TEST(GmshIo, Block3dHex27) {
+  checkGeo({"block3d.geo", 3, 3, CellType::Hex27, 7 * 7 * 7, 27, 1.0, 1e-12, cubeSets(), kOrder2});
+}
+TEST(GmshIo, Block3dHex20) {
+  checkGeo({"block3d.geo", 3, 3, CellType::Hex20, 64 + 3 * 48, 27, 1.0, 1e-12, cubeSets(), kIncomplete});
+}
+TEST(GmshIo, Block3dTet10) {
+  checkGeo({"block3d_tet.geo", 3, 3, CellType::Tet10, -1, -1, 1.0, 1e-12, cubeSets(), kOrder2});
+}
+
 TEST(GmshIo, QuarterAnnulus) {
   // The arcs are polygons of 2n = 8 chords: the meshed area is that between
   // two inscribed polygons, 8 * (2^2 - 1^2) * sin(pi/16) / 2, 0.64 % below 3*pi/4.
@@ -368,4 +409,16 @@ TEST(GmshIo, QuarterAnnulus) {
              {"outer", [=](const Vec& p) { return std::abs(radius(p) - 2) < 1e-9; }},
              {"symmetry_x", [](const Vec& p) { return near(p[0], 0); }},
              {"symmetry_y", [](const Vec& p) { return near(p[1], 0); }}}});
+}
+
+TEST(GmshIo, QuarterAnnulusQuad9) {
+  // Order 2: the edge nodes on the arcs lie on the circles (so not at their
+  // corners' mean: straight = false); the corner polygon is the one above.
+  const auto radius = [](const Vec& p) { return std::hypot(p[0], p[1]); };
+  checkGeo({"quarter_annulus2d.geo", 2, 4, CellType::Quad9, 9 * 17, 4 * 8, 12.0 * std::sin(M_PI / 16.0), 1e-9,
+            {{"inner", [=](const Vec& p) { return std::abs(radius(p) - 1) < 1e-9; }},
+             {"outer", [=](const Vec& p) { return std::abs(radius(p) - 2) < 1e-9; }},
+             {"symmetry_x", [](const Vec& p) { return near(p[0], 0); }},
+             {"symmetry_y", [](const Vec& p) { return near(p[1], 0); }}},
+            kOrder2, false});
 }

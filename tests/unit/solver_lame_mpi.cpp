@@ -1,12 +1,23 @@
 // Convergence: the thick-walled cylinder under internal pressure (Lamé),
-// plane strain, on three quarter-annulus meshes (h, h/2, h/4). The nodal RMS
-// displacement error must fall at the rate of bilinear elements, 2.
+// plane strain, on quarter-annulus meshes (h, h/2, h/4).
+//  - QUAD4 (n = 4, 8, 16): the nodal RMS displacement error falls at the rate
+//    of bilinear elements, 2.
+//  - QUAD8, QUAD9, TRI6 (order-2 meshes, n = 2, 4, 8, mid-side nodes on the
+//    arcs) and HEX20, HEX27 (a slice of the cylinder, one layer, u_z = 0 on
+//    both faces: plane strain): the L2 displacement error, integrated over
+//    the cells, falls at the rate of quadratic elements, 3.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <iostream>
+#include <memory>
+
+#include <Teuchos_CommHelpers.hpp>
 
 #include "TestSupport.hpp"
+#include "coulomb/fem/ElementKernel.hpp"
+#include "coulomb/fem/Quadrature.hpp"
+#include "coulomb/mesh/Mesh.hpp"
 
 namespace coulomb::test {
 namespace {
@@ -20,31 +31,99 @@ double exactRadialDisplacement(double r) {
   return (1 + kNu) / kE * ((1 - 2 * kNu) * A * r + B / r);
 }
 
-/// Relative nodal RMS error of one mesh.
-double solveAndMeasure(const std::string& meshFile, const std::string& dir) {
-  const std::string body =
+std::array<double, 2> exactDisplacement(const double* X) {
+  const double r = std::hypot(X[0], X[1]);
+  const double ur = exactRadialDisplacement(r);
+  return {ur * X[0] / r, ur * X[1] / r};
+}
+
+/// Runs the Lamé problem on one mesh (3D: a slice held at u_z = 0 on both faces).
+std::unique_ptr<solver::Simulation> solveLame(const std::string& meshFile, const std::string& dir, int dimension = 2) {
+  std::string body =
       "<ParameterList name=\"Dirichlet Conditions\">" + dirichletXml("sym x", "symmetry_x", "x", 0.0) +
-      dirichletXml("sym y", "symmetry_y", "y", 0.0) +
+      dirichletXml("sym y", "symmetry_y", "y", 0.0);
+  if (dimension == 3) body += dirichletXml("back z", "back", "z", 0.0) + dirichletXml("front z", "front", "z", 0.0);
+  body +=
       "</ParameterList><ParameterList name=\"Neumann Conditions\"><ParameterList name=\"inner pressure\">"
       "<Parameter name=\"Side Set\" type=\"string\" value=\"inner\"/>"
       "<Parameter name=\"Value\" type=\"double\" value=\"1.0\"/></ParameterList></ParameterList>"
-      "<ParameterList name=\"Problem\"><Parameter name=\"Plane Assumption\" type=\"string\" value=\"Plane Strain\"/></ParameterList>"
       "<ParameterList name=\"Newton\"><Parameter name=\"Relative Tolerance\" type=\"double\" value=\"1e-12\"/></ParameterList>";
+  if (dimension == 2)
+    body += "<ParameterList name=\"Problem\"><Parameter name=\"Plane Assumption\" type=\"string\" value=\"Plane "
+            "Strain\"/></ParameterList>";
   const std::string material =
       "<Parameter name=\"Young's Modulus\" type=\"double\" value=\"1000\"/>"
       "<Parameter name=\"Poisson's Ratio\" type=\"double\" value=\"0.3\"/>";
   const std::string deck = dir + "/lame.xml";
   writeOnRoot(deck, deckXml(meshFile, material, body));
-  solver::Simulation simulation(deck, worldComm(), nullptr);
-  simulation.run();
+  auto simulation = std::make_unique<solver::Simulation>(deck, worldComm(), nullptr);
+  simulation->run();
+  return simulation;
+}
+
+/// Relative nodal RMS error of one mesh.
+double solveAndMeasure(const std::string& meshFile, const std::string& dir) {
+  const auto simulation = solveLame(meshFile, dir);
   double error2 = 0, norm2 = 0;
-  forOwnedNodes(simulation, [&](long long, const double* X, const double* u) {
-    const double r = std::hypot(X[0], X[1]);
-    const double ur = exactRadialDisplacement(r);
-    const double ex = ur * X[0] / r, ey = ur * X[1] / r;
-    error2 += (u[0] - ex) * (u[0] - ex) + (u[1] - ey) * (u[1] - ey);
-    norm2 += ex * ex + ey * ey;
+  forOwnedNodes(*simulation, [&](long long, const double* X, const double* u) {
+    const auto e = exactDisplacement(X);
+    error2 += (u[0] - e[0]) * (u[0] - e[0]) + (u[1] - e[1]) * (u[1] - e[1]);
+    norm2 += e[0] * e[0] + e[1] * e[1];
   });
+  return std::sqrt(globalSum(error2) / globalSum(norm2));
+}
+
+/// \int (u_h - u)^2 and \int u^2 over one cell, by the cell's own quadrature rule
+/// on its isoparametric (curved) geometry; the exact u_z is 0.
+template <mesh::CellType T>
+void addCellError(const mesh::ElementBlock& block, long long e, const std::vector<double>& coordinates,
+                  const std::vector<double>& u, double& error2, double& norm2) {
+  using Traits = fem::CellTraits<T>;
+  constexpr int D = Traits::dim;
+  constexpr fem::ReferenceShape S = Traits::shape;
+  const auto& tab = fem::tabulatedShape<S>();
+  std::array<double, Traits::dofs> X{}, ue{}, G{};
+  for (int a = 0; a < Traits::nodes; ++a) {
+    const long long node = block.connectivity[e * Traits::nodes + a];
+    for (int d = 0; d < D; ++d) X[a * D + d] = coordinates[node * D + d], ue[a * D + d] = u[node * D + d];
+  }
+  for (int q = 0; q < tab.points; ++q) {
+    const double dV = tab.weight[q] * fem::physicalGradients<S>(X, tab.dNdxi[q], G);
+    double x[D] = {}, uh[D] = {};
+    for (int a = 0; a < Traits::nodes; ++a)
+      for (int d = 0; d < D; ++d) x[d] += tab.N[q][a] * X[a * D + d], uh[d] += tab.N[q][a] * ue[a * D + d];
+    const auto exact = exactDisplacement(x);
+    for (int d = 0; d < D; ++d) {
+      const double ex = d < 2 ? exact[d] : 0.0;
+      error2 += dV * (uh[d] - ex) * (uh[d] - ex);
+      norm2 += dV * ex * ex;
+    }
+  }
+}
+
+/// Relative L2 displacement error of one mesh (cells split over the ranks).
+double solveAndMeasureL2(const std::string& meshFile, const std::string& dir, int dimension) {
+  const auto simulation = solveLame(meshFile, dir, dimension);
+  const mesh::GlobalMesh& m = simulation->mesh().global();
+  std::vector<double> mine(m.coordinates.size(), 0.0), u(m.coordinates.size(), 0.0);
+  forOwnedNodes(*simulation, [&](long long node, const double*, const double* un) {
+    for (int d = 0; d < dimension; ++d) mine[node * dimension + d] = un[d];
+  });
+  Teuchos::reduceAll(*worldComm(), Teuchos::REDUCE_SUM, static_cast<int>(mine.size()), mine.data(), u.data());
+  const int rank = worldComm()->getRank(), size = worldComm()->getSize();
+  double error2 = 0, norm2 = 0;
+  using mesh::CellType;
+  for (const auto& block : m.blocks)
+    for (long long e = rank; e < block.numElements(); e += size) {
+      switch (block.cellType) {
+        case CellType::Quad8: addCellError<CellType::Quad8>(block, e, m.coordinates, u, error2, norm2); break;
+        case CellType::Quad9: addCellError<CellType::Quad9>(block, e, m.coordinates, u, error2, norm2); break;
+        case CellType::Tri6: addCellError<CellType::Tri6>(block, e, m.coordinates, u, error2, norm2); break;
+        case CellType::Hex20: addCellError<CellType::Hex20>(block, e, m.coordinates, u, error2, norm2); break;
+        case CellType::Hex27: addCellError<CellType::Hex27>(block, e, m.coordinates, u, error2, norm2); break;
+        default: ADD_FAILURE() << "no L2 error for " << mesh::toString(block.cellType);
+      }
+    }
   return std::sqrt(globalSum(error2) / globalSum(norm2));
 }
 
@@ -62,6 +141,35 @@ TEST(LameCylinder, DisplacementErrorConvergesAtRateTwo) {
   }
   EXPECT_LT(errors.back(), 2e-3);
 }
+
+struct QuadraticLame {
+  const char* mesh;  ///< quarter_annulus<mesh>_n<n>.e
+  int dimension;
+};
+
+class LameQuadratic : public ::testing::TestWithParam<QuadraticLame> {};
+
+TEST_P(LameQuadratic, L2DisplacementErrorConvergesAtRateThree) {
+  const QuadraticLame c = GetParam();
+  const std::string type = c.mesh;
+  const std::string dir = scratchDirectory("lame_" + type);
+  std::vector<double> errors;
+  for (int n : {2, 4, 8})
+    errors.push_back(
+        solveAndMeasureL2(shippedMesh("quarter_annulus" + type + "_n" + std::to_string(n) + ".e"), dir, c.dimension));
+  for (std::size_t i = 0; i + 1 < errors.size(); ++i) {
+    const double rate = std::log2(errors[i] / errors[i + 1]);
+    if (worldComm()->getRank() == 0)
+      std::cout << "Lame " << type << ": L2 error " << errors[i] << " -> " << errors[i + 1] << ", rate " << rate << "\n";
+    EXPECT_GE(rate, 2.7) << type;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(QuadraticCells, LameQuadratic,
+                         ::testing::Values(QuadraticLame{"2d_quad8", 2}, QuadraticLame{"2d_quad9", 2},
+                                           QuadraticLame{"2d_tri6", 2}, QuadraticLame{"3d_hex20", 3},
+                                           QuadraticLame{"3d_hex27", 3}),
+                         [](const auto& info) { return std::string(info.param.mesh).substr(3); });
 
 }  // namespace
 }  // namespace coulomb::test

@@ -178,7 +178,7 @@ struct Assembler::Impl {
     const auto& block = mesh.global().blocks[face.block];
     const int nodesPerCell = mesh::numNodes(block.cellType);
     const long long* cell = &block.connectivity[(face.element - block.firstElement) * nodesPerCell];
-    std::array<int, 4> localNodes{};
+    std::array<int, mesh::kMaxFaceNodes> localNodes{};
     faceLocalNodes(block.cellType, face.side, localNodes);
     std::array<double, Traits::dofs> X{}, force{};
     std::array<int, Traits::dofs> ldof{};
@@ -215,6 +215,12 @@ auto dispatchCell(CellType type, Visitor&& visit) {
     case CellType::Tri3: return visit(std::integral_constant<CellType, CellType::Tri3>{});
     case CellType::Hex8: return visit(std::integral_constant<CellType, CellType::Hex8>{});
     case CellType::Tet4: return visit(std::integral_constant<CellType, CellType::Tet4>{});
+    case CellType::Quad8: return visit(std::integral_constant<CellType, CellType::Quad8>{});
+    case CellType::Quad9: return visit(std::integral_constant<CellType, CellType::Quad9>{});
+    case CellType::Tri6: return visit(std::integral_constant<CellType, CellType::Tri6>{});
+    case CellType::Hex20: return visit(std::integral_constant<CellType, CellType::Hex20>{});
+    case CellType::Hex27: return visit(std::integral_constant<CellType, CellType::Hex27>{});
+    case CellType::Tet10: return visit(std::integral_constant<CellType, CellType::Tet10>{});
   }
   throw InternalError("unknown cell type");
 }
@@ -362,6 +368,10 @@ AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residua
         case FaceType::Line2: m.faceForces<FaceType::Line2>(face, time, rData.get()); break;
         case FaceType::Tri3: m.faceForces<FaceType::Tri3>(face, time, rData.get()); break;
         case FaceType::Quad4: m.faceForces<FaceType::Quad4>(face, time, rData.get()); break;
+        case FaceType::Line3: m.faceForces<FaceType::Line3>(face, time, rData.get()); break;
+        case FaceType::Tri6: m.faceForces<FaceType::Tri6>(face, time, rData.get()); break;
+        case FaceType::Quad8: m.faceForces<FaceType::Quad8>(face, time, rData.get()); break;
+        case FaceType::Quad9: m.faceForces<FaceType::Quad9>(face, time, rData.get()); break;
       }
     }
   }

@@ -1,5 +1,5 @@
 /// @file FaceKernel.cpp
-/// @brief Surface-load integration on Line2, Tri3 and Quad4 faces.
+/// @brief Surface-load integration on Line2/Line3, Tri3/Tri6 and Quad4/Quad8/Quad9 faces.
 #include "coulomb/fem/FaceKernel.hpp"
 
 #include <cmath>
@@ -100,6 +100,10 @@ std::array<double, FaceTraits<F>::dim> faceAreaVector(const std::array<double, F
 COULOMB_INSTANTIATE_FACE(mesh::FaceType::Line2)
 COULOMB_INSTANTIATE_FACE(mesh::FaceType::Tri3)
 COULOMB_INSTANTIATE_FACE(mesh::FaceType::Quad4)
+COULOMB_INSTANTIATE_FACE(mesh::FaceType::Line3)
+COULOMB_INSTANTIATE_FACE(mesh::FaceType::Tri6)
+COULOMB_INSTANTIATE_FACE(mesh::FaceType::Quad8)
+COULOMB_INSTANTIATE_FACE(mesh::FaceType::Quad9)
 #undef COULOMB_INSTANTIATE_FACE
 
 }  // namespace coulomb::fem

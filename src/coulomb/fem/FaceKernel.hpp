@@ -4,7 +4,7 @@
 /// reference-configuration face, and face measures.
 ///
 /// Face nodes are in the order of faceLocalNodes (outward right-hand-rule normal);
-/// X is node-major (x0 y0 [z0] x1 ...). Line2 faces live in the x-y plane.
+/// X is node-major (x0 y0 [z0] x1 ...). Line2/Line3 faces live in the x-y plane.
 #include <array>
 
 #include "coulomb/fem/ShapeFunctions.hpp"
@@ -16,7 +16,7 @@ namespace coulomb::fem {
 template <mesh::FaceType F>
 struct FaceTraits {
   static constexpr int nodes = mesh::numNodes(F);
-  static constexpr int dim = F == mesh::FaceType::Line2 ? 2 : 3;
+  static constexpr int dim = (F == mesh::FaceType::Line2 || F == mesh::FaceType::Line3) ? 2 : 3;
   static constexpr int dofs = nodes * dim;
   static constexpr ReferenceShape shape = referenceShape(F);
 };
@@ -33,7 +33,8 @@ void faceTractionForces(const std::array<double, FaceTraits<F>::dofs>& X,
 /// @brief Consistent nodal forces of a uniform pressure: f_a = -p \int_A N_a n dA (2D: x thickness).
 ///
 /// p > 0 pushes into the body. n dA = dX/dxi x dX/deta dxi deta (2D: (dy, -dx) dxi) is the
-/// pointwise outward area element, so warped Quad4 faces are integrated exactly.
+/// pointwise outward area element, so warped Quad4 faces are integrated exactly (curved
+/// quadratic faces to the order of their rule).
 /// `thickness` is ignored for 3D faces. force is overwritten.
 template <mesh::FaceType F>
 void facePressureForces(const std::array<double, FaceTraits<F>::dofs>& X, double pressure, double thickness,

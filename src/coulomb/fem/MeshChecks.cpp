@@ -31,6 +31,11 @@ const mesh::ElementBlock& blockOf(const mesh::GlobalMesh& mesh, long long elemen
 }  // namespace
 
 double cellMeasure(mesh::CellType type, const double* X) {
+  // A quadratic cell is measured by its corners (they lead its node list):
+  // the straight-sided cell they span. Its curved edges change the volume,
+  // but a cell whose corners span no volume is degenerate however its
+  // mid-side nodes sit, which is what the zero-volume check asks.
+  if (mesh::isQuadratic(type)) return cellMeasure(mesh::linearType(type), X);
   switch (type) {
     case mesh::CellType::Tri3:
     case mesh::CellType::Quad4: {
@@ -50,6 +55,7 @@ double cellMeasure(mesh::CellType type, const double* X) {
       for (const auto& t : kTets) volume += tetVolume(X, X + 3 * t[0], X + 3 * t[1], X + 18);
       return volume;
     }
+    default: break;
   }
   return 0.0;
 }
@@ -171,7 +177,7 @@ NodeElementAdjacency nodeElementAdjacency(const mesh::GlobalMesh& mesh) {
 long long elementAcrossFace(const mesh::GlobalMesh& mesh, const NodeElementAdjacency& adjacency, long long element,
                             int side) {
   const mesh::ElementBlock& block = blockOf(mesh, element);
-  std::array<int, 4> local{};
+  std::array<int, mesh::kMaxFaceNodes> local{};
   const int count = faceLocalNodes(block.cellType, side, local);
   const long long* cell = &block.connectivity[(element - block.firstElement) * mesh::numNodes(block.cellType)];
   // The elements of the face's first node that hold all its other nodes too.

@@ -6,6 +6,13 @@
 /// (exact for degree 3 in each variable). Tri3: 3-point interior rule, Tet4:
 /// 4-point rule (both exact for total degree 2). Weights sum to the reference
 /// measure: 2, 4, 8 for Line2/Quad4/Hex8; 1/2, 1/6 for Tri3/Tet4.
+/// Quadratic shapes: Line3 3-point Gauss, Quad8/Quad9 3x3, Hex20/Hex27 3x3x3
+/// Gauss (exact for degree 5 in each variable: the stiffness of an affine
+/// cell has degree 4 per variable); Tri6 the 6-point Strang-Fix/Dunavant rule
+/// (total degree 4, so also the degree-4 pressure and stress-projection
+/// integrands of a straight TRI6); Tet10 an 18-point collapsed Gauss product
+/// rule of total degree 3 (the constant-stress residual of a TET10 with curved
+/// edges has degree 3: the patch test needs it; Tet4's degree-2 rule fails it).
 #include <array>
 
 #include "coulomb/fem/ShapeFunctions.hpp"
@@ -14,11 +21,21 @@ namespace coulomb::fem {
 
 /// @brief Number of quadrature points of the rule used for a reference shape.
 constexpr int numQuadraturePoints(ReferenceShape s) {
-  return s == ReferenceShape::Line2   ? 2
-         : s == ReferenceShape::Tri3  ? 3
-         : s == ReferenceShape::Quad4 ? 4
-         : s == ReferenceShape::Tet4  ? 4
-                                      : 8;
+  switch (s) {
+    case ReferenceShape::Line2: return 2;
+    case ReferenceShape::Tri3: return 3;
+    case ReferenceShape::Quad4: return 4;
+    case ReferenceShape::Tet4: return 4;
+    case ReferenceShape::Hex8: return 8;
+    case ReferenceShape::Line3: return 3;
+    case ReferenceShape::Tri6: return 6;
+    case ReferenceShape::Quad8:
+    case ReferenceShape::Quad9: return 9;
+    case ReferenceShape::Tet10: return 18;
+    case ReferenceShape::Hex20:
+    case ReferenceShape::Hex27: return 27;
+  }
+  return 0;
 }
 
 /// @brief Quadrature points (parametric coordinates) and weights of one reference shape.

@@ -51,7 +51,8 @@ KernelStatus cellNodalStress(const MaterialParameters& material, const std::arra
     }
     const double wdV = tab.weight[q] * detJ * scale;
     for (int a = 0; a < n; ++a) {
-      const double w = wdV * tab.N[q][a];
+      // Quadratic cells: N_a^2 (see the header: \int N_a is zero or negative at their corners).
+      const double w = wdV * (mesh::isQuadratic(T) ? tab.N[q][a] * tab.N[q][a] : tab.N[q][a]);
       weight[a] += w;
       for (int k = 0; k < 6; ++k) weightedStress[a * 6 + k] += w * sigma[k];
     }
@@ -74,6 +75,12 @@ COULOMB_INSTANTIATE_STRESS(mesh::CellType::Quad4)
 COULOMB_INSTANTIATE_STRESS(mesh::CellType::Tri3)
 COULOMB_INSTANTIATE_STRESS(mesh::CellType::Hex8)
 COULOMB_INSTANTIATE_STRESS(mesh::CellType::Tet4)
+COULOMB_INSTANTIATE_STRESS(mesh::CellType::Quad8)
+COULOMB_INSTANTIATE_STRESS(mesh::CellType::Quad9)
+COULOMB_INSTANTIATE_STRESS(mesh::CellType::Tri6)
+COULOMB_INSTANTIATE_STRESS(mesh::CellType::Hex20)
+COULOMB_INSTANTIATE_STRESS(mesh::CellType::Hex27)
+COULOMB_INSTANTIATE_STRESS(mesh::CellType::Tet10)
 #undef COULOMB_INSTANTIATE_STRESS
 
 }  // namespace coulomb::fem

@@ -12,7 +12,10 @@ namespace coulomb::fem {
 ///
 /// weightedStress[a*6+k] = \int_{Omega_0} N_a sigma_k dV_0, weight[a] = \int_{Omega_0} N_a dV_0,
 /// so that the lumped L2 projection at a node is (sum over cells of weightedStress) / (sum of
-/// weight). Voigt order xx yy zz xy yz xz. Linear elastic: sigma = C : eps (2D plane strain
+/// weight). Quadratic cells use N_a^2 in place of N_a in both (a diagonally scaled lumping):
+/// \int N_a is zero at the corners of a straight TRI6 and negative at those of QUAD8, HEX20
+/// and TET10, which would leave a corner without a weight or divide by a negative sum;
+/// N_a^2 weights are positive for every node, and a constant stress is still recovered exactly. Voigt order xx yy zz xy yz xz. Linear elastic: sigma = C : eps (2D plane strain
 /// sigma_zz = nu (sigma_xx + sigma_yy), plane stress sigma_zz = 0). Neo-Hookean: Cauchy
 /// sigma = P F^T / J. 2D integrals are multiplied by the thickness (it cancels in the ratio).
 /// Outputs are overwritten; zero-filled unless Ok.

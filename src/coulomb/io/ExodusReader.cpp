@@ -28,6 +28,8 @@
 namespace coulomb::io {
 namespace {
 
+constexpr const char* kSupportedTypes = "QUAD4, QUAD8, QUAD9, TRI3, TRI6, HEX8, HEX20, HEX27, TET4, TET10";
+
 /// Closes the file however readExodus() leaves.
 struct FileGuard {
   int id = -1;
@@ -191,11 +193,12 @@ private:
       const std::string type = trimmed(param.topology);
       COULOMB_REQUIRE(parseExodusElementType(type, static_cast<int>(param.num_nodes_per_entry), block.cellType),
                       "mesh '" << path_ << "': " << label << " has element type " << type << " with "
-                               << param.num_nodes_per_entry << " nodes per element; supported: QUAD4, TRI3, HEX8, TET4");
+                               << param.num_nodes_per_entry << " nodes per element; supported: " << kSupportedTypes);
       COULOMB_REQUIRE(mesh::spatialDimension(block.cellType) == mesh_.dimension,
                       "mesh '" << path_ << "': " << label << " has element type " << type << " (a "
                                << mesh::spatialDimension(block.cellType) << "D cell) in a " << mesh_.dimension
-                               << "D file; supported: QUAD4, TRI3 in 2D files, HEX8, TET4 in 3D files");
+                               << "D file; supported: QUAD4, QUAD8, QUAD9, TRI3, TRI6 in 2D files, HEX8, HEX20, HEX27, TET4, "
+                                  "TET10 in 3D files");
       block.connectivity.resize(static_cast<std::size_t>(param.num_entry * param.num_nodes_per_entry));
       if (param.num_entry > 0) {
         requireLength("connect" + std::to_string(b + 1), block.connectivity.size(), "the connectivity of " + label);
@@ -307,23 +310,32 @@ private:
 }  // namespace
 
 bool parseExodusElementType(const std::string& type, int nodesPerElement, mesh::CellType& cellType) {
-  const std::string t = upper(type);
+  // The name gives the family (QUAD, TRI/TRIANGLE, HEX/HEXAHEDRON, TET/TETRA),
+  // the node count the member: "HEX" with 27 nodes is a HEX27. A number in
+  // the name ("QUAD9", "TRIANGLE6") must agree with the node count.
+  std::string t = upper(type);
+  std::size_t digits = t.size();
+  while (digits > 0 && std::isdigit(static_cast<unsigned char>(t[digits - 1]))) --digits;
+  const std::string family = t.substr(0, digits);
+  if (digits < t.size() && (t.size() - digits > 2 || std::stoi(t.substr(digits)) != nodesPerElement)) return false;
   using mesh::CellType;
-  CellType parsed;
-  if (t == "QUAD" || t == "QUAD4")
-    parsed = CellType::Quad4;
-  else if (t == "TRI" || t == "TRI3" || t == "TRIANGLE")
-    parsed = CellType::Tri3;
-  else if (t == "HEX" || t == "HEX8" || t == "HEXAHEDRON")
-    parsed = CellType::Hex8;
-  else if (t == "TET" || t == "TET4" || t == "TETRA" || t == "TETRA4")
-    parsed = CellType::Tet4;
-  else
-    return false;
-  // "HEX" with 27 nodes is a HEX27, "TETRA" with 10 a TET10: not ours.
-  if (nodesPerElement != mesh::numNodes(parsed)) return false;
-  cellType = parsed;
-  return true;
+  struct Member {
+    const char* family;
+    CellType type;
+  };
+  static const Member kMembers[] = {
+      {"QUAD", CellType::Quad4},    {"QUAD", CellType::Quad8},     {"QUAD", CellType::Quad9},
+      {"TRI", CellType::Tri3},      {"TRI", CellType::Tri6},       {"TRIANGLE", CellType::Tri3},
+      {"TRIANGLE", CellType::Tri6}, {"HEX", CellType::Hex8},       {"HEX", CellType::Hex20},
+      {"HEX", CellType::Hex27},     {"HEXAHEDRON", CellType::Hex8}, {"HEXAHEDRON", CellType::Hex20},
+      {"HEXAHEDRON", CellType::Hex27}, {"TET", CellType::Tet4},    {"TET", CellType::Tet10},
+      {"TETRA", CellType::Tet4},    {"TETRA", CellType::Tet10}};
+  for (const Member& m : kMembers)
+    if (family == m.family && nodesPerElement == mesh::numNodes(m.type)) {
+      cellType = m.type;
+      return true;
+    }
+  return false;
 }
 
 mesh::GlobalMesh readExodus(const std::string& path, const MemoryBudget& budget) { return Reader(path, budget).read(); }

@@ -17,6 +17,7 @@
 #include <unordered_map>
 
 #include "coulomb/core/Error.hpp"
+#include "coulomb/io/GmshNodeOrder.hpp"
 
 namespace coulomb::io {
 namespace {
@@ -52,7 +53,7 @@ int gmshDimension(int type) {
   }
 }
 
-/// Number of nodes of the first-order types we convert, 0 for the others.
+/// Number of nodes of the types we convert (first and second order), 0 for the others.
 int gmshSupportedNodes(int type) {
   switch (type) {
     case 15: return 1;
@@ -61,6 +62,13 @@ int gmshSupportedNodes(int type) {
     case 3: return 4;
     case 4: return 4;
     case 5: return 8;
+    case 8: return 3;
+    case 9: return 6;
+    case 10: return 9;
+    case 11: return 10;
+    case 12: return 27;
+    case 16: return 8;
+    case 17: return 20;
     default: return 0;
   }
 }
@@ -246,6 +254,9 @@ double det3(const Point& o, const Point& a, const Point& b, const Point& c) {  /
 /// Corner "Jacobians" of a cell: all positive iff the cell is valid and
 /// positively oriented (for simplices there is one, the signed measure).
 std::vector<double> cornerJacobians(CellType type, const std::vector<Point>& x) {
+  // A quadratic cell by its corners (they lead its node list): a cell whose
+  // straight-sided corner cell is inverted is flipped like that cell.
+  if (mesh::isQuadratic(type)) return cornerJacobians(mesh::linearType(type), x);
   switch (type) {
     case CellType::Tri3: return {cross2(x[0], x[1], x[2])};
     case CellType::Quad4: {
@@ -262,36 +273,34 @@ std::vector<double> cornerJacobians(CellType type, const std::vector<Point>& x) 
       for (int i = 0; i < 8; ++i) j[i] = det3(x[i], x[corner[i][0]], x[corner[i][1]], x[corner[i][2]]);
       return j;
     }
+    default: break;
   }
   return {};
 }
 
-/// Node permutation that reverses a cell's orientation.
-const std::vector<int>& flipPermutation(CellType type) {
-  static const std::vector<int> tri{0, 2, 1}, quad{0, 3, 2, 1}, tet{0, 2, 1, 3}, hex{0, 3, 2, 1, 4, 7, 6, 5};
-  switch (type) {
-    case CellType::Tri3: return tri;
-    case CellType::Quad4: return quad;
-    case CellType::Tet4: return tet;
-    case CellType::Hex8: break;
-  }
-  return hex;
-}
 
 CellType cellTypeOf(int gmshType) {
   switch (gmshType) {
     case 2: return CellType::Tri3;
     case 3: return CellType::Quad4;
     case 4: return CellType::Tet4;
+    case 9: return CellType::Tri6;
+    case 10: return CellType::Quad9;
+    case 11: return CellType::Tet10;
+    case 12: return CellType::Hex27;
+    case 16: return CellType::Quad8;
+    case 17: return CellType::Hex20;
     default: return CellType::Hex8;
   }
 }
 
-using FaceKey = std::array<long long, 4>;  // sorted node numbers, padded with -1
+
+using FaceKey = std::array<long long, mesh::kMaxFaceNodes>;  // sorted node numbers, padded with -1
 
 FaceKey faceKey(std::vector<long long> nodes) {
   std::sort(nodes.begin(), nodes.end());
-  FaceKey key{-1, -1, -1, -1};
+  FaceKey key;
+  key.fill(-1);
   std::copy(nodes.begin(), nodes.end(), key.begin());
   return key;
 }
@@ -359,23 +368,25 @@ private:
     std::vector<char> used(file_.nodeTags.size(), 0);
     for (const auto& [tag, elements] : groups) {
       const int type = elements.front()->type;
-      COULOMB_REQUIRE(gmshSupportedNodes(type) > 0, prefix() << groupLabel(dim_, tag) << " has "
-                                                             << gmshTypeName(type) << " elements; supported: "
-                                                             << (dim_ == 2 ? "3-node triangles, 4-node quadrangles"
-                                                                           : "4-node tetrahedra, 8-node hexahedra")
-                                                             << " (set Mesh.ElementOrder = 1)");
+      COULOMB_REQUIRE(gmshSupportedNodes(type) > 0 && gmshDimension(type) >= 2,
+                      prefix() << groupLabel(dim_, tag) << " has " << gmshTypeName(type)
+                               << " elements; supported: "
+                               << (dim_ == 2 ? "3- and 6-node triangles, 4-, 8- and 9-node quadrangles"
+                                             : "4- and 10-node tetrahedra, 8-, 20- and 27-node hexahedra")
+                               << " (Mesh.ElementOrder 1 or 2)");
       mesh::ElementBlock block;
       block.name = nameOf(dim_, tag);
       block.id = tag;
       block.cellType = cellTypeOf(type);
       block.firstElement = numCells_;
+      const std::vector<int> exodusOrder = gmshToExodus(block.cellType);
       for (const GmshElement* e : elements) {
         COULOMB_REQUIRE(e->type == type, prefix() << groupLabel(dim_, tag) << " mixes " << gmshTypeName(type)
                                                   << " and " << gmshTypeName(e->type)
                                                   << " elements; an element block holds one cell type: put them in "
                                                   << "separate physical groups");
         std::vector<std::size_t> cell;
-        for (long long n : e->nodes) cell.push_back(node(n, e->tag));
+        for (int g : exodusOrder) cell.push_back(node(e->nodes[static_cast<std::size_t>(g)], e->tag));
         orient(block.cellType, cell, e->tag, tag);
         for (std::size_t n : cell) used[n] = 1;
         cells.push_back(std::move(cell));
@@ -447,9 +458,12 @@ private:
       if (e.physical == 0) continue;
       const int d = gmshDimension(e.type);
       if (d == dim_ - 1) {
-        const bool ok = dim_ == 2 ? e.type == 1 : (e.type == 2 || e.type == 3);
+        const bool ok = dim_ == 2 ? (e.type == 1 || e.type == 8)
+                                  : (e.type == 2 || e.type == 3 || e.type == 9 || e.type == 10 || e.type == 16);
         COULOMB_REQUIRE(ok, prefix() << groupLabel(d, e.physical) << " has " << gmshTypeName(e.type)
-                                     << " elements; only first-order boundary elements are supported");
+                                     << " elements; supported boundary elements: "
+                                     << (dim_ == 2 ? "2- and 3-node lines"
+                                                   : "3- and 6-node triangles, 4-, 8- and 9-node quadrangles"));
         boundary[e.physical].push_back(&e);
       } else if (d < dim_ - 1) {
         COULOMB_REQUIRE(gmshSupportedNodes(e.type) > 0, prefix() << groupLabel(d, e.physical) << " has "
@@ -552,16 +566,32 @@ private:
 
 }  // namespace
 
+using SideTable = std::vector<std::vector<int>>;
+
 const std::vector<int>& exodusSideNodes(CellType type, int side) {
-  static const std::vector<std::vector<int>> quad{{0, 1}, {1, 2}, {2, 3}, {3, 0}};
-  static const std::vector<std::vector<int>> tri{{0, 1}, {1, 2}, {2, 0}};
-  static const std::vector<std::vector<int>> hex{{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6},
-                                                 {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
-  static const std::vector<std::vector<int>> tet{{0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 2, 1}};
-  const auto& table = type == CellType::Quad4 ? quad : type == CellType::Tri3 ? tri : type == CellType::Hex8 ? hex : tet;
-  COULOMB_REQUIRE(side >= 0 && side < static_cast<int>(table.size()),
+  static const SideTable quad{{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  static const SideTable tri{{0, 1}, {1, 2}, {2, 0}};
+  static const SideTable hex{{0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {0, 4, 7, 3}, {0, 3, 2, 1}, {4, 5, 6, 7}};
+  static const SideTable tet{{0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 2, 1}};
+  static const SideTable quad8 = quadraticSides(CellType::Quad8, quad), quad9 = quadraticSides(CellType::Quad9, quad),
+                         tri6 = quadraticSides(CellType::Tri6, tri), hex20 = quadraticSides(CellType::Hex20, hex),
+                         hex27 = quadraticSides(CellType::Hex27, hex), tet10 = quadraticSides(CellType::Tet10, tet);
+  const SideTable* table = &tet;
+  switch (type) {
+    case CellType::Quad4: table = &quad; break;
+    case CellType::Tri3: table = &tri; break;
+    case CellType::Hex8: table = &hex; break;
+    case CellType::Tet4: table = &tet; break;
+    case CellType::Quad8: table = &quad8; break;
+    case CellType::Quad9: table = &quad9; break;
+    case CellType::Tri6: table = &tri6; break;
+    case CellType::Hex20: table = &hex20; break;
+    case CellType::Hex27: table = &hex27; break;
+    case CellType::Tet10: table = &tet10; break;
+  }
+  COULOMB_REQUIRE(side >= 0 && side < static_cast<int>(table->size()),
                   "side " << side << " of a " << mesh::toString(type) << " cell does not exist");
-  return table[static_cast<std::size_t>(side)];
+  return (*table)[static_cast<std::size_t>(side)];
 }
 
 mesh::GlobalMesh readGmsh(const std::string& path) {

@@ -11,7 +11,8 @@
 /// Mapping of physical groups (d = highest element dimension in the file):
 /// - dimension d (surfaces in 2D, volumes in 3D) -> element blocks, in
 ///   ascending physical tag order; id = physical tag, name = physical name.
-///   One block holds one cell type (QUAD4, TRI3, HEX8, TET4).
+///   One block holds one cell type (QUAD4, TRI3, HEX8, TET4 or, from a mesh
+///   of order 2, QUAD8, QUAD9, TRI6, HEX20, HEX27, TET10).
 /// - dimension d-1 -> a side set AND a node set of the same name and id
 ///   (physical tag). Each boundary element is matched to the bulk element
 ///   side with exactly its nodes; if two bulk elements share that side (an
@@ -23,7 +24,11 @@
 /// - 2D meshes must lie in the plane z = 0; z is dropped. Cells are oriented
 ///   counter-clockwise (2D) / with positive volume (3D), flipped if needed;
 ///   degenerate or inverted-after-flip (non-convex) cells are errors.
-/// gmsh's node order for line2/tri3/quad4/tet4/hex8 is Exodus' order.
+/// gmsh's node order for line2/tri3/quad4/tet4/hex8 and line3/tri6/quad8/quad9
+/// is Exodus' order; TET10, HEX20 and HEX27 cells are renumbered (their edge
+/// and face nodes come in another order in gmsh). Orientation of a quadratic
+/// cell is judged by its corners. Boundary elements of order 2 (line3, tri6,
+/// quad8, quad9) match the sides of the quadratic cells.
 #include <string>
 #include <vector>
 
@@ -43,6 +48,9 @@ mesh::GlobalMesh readGmsh(const std::string& path);
 /// edge in 2D) points out of a positively oriented cell.
 /// QUAD4/TRI3: side k = nodes k, k+1. HEX8 (1-based): 1-2-6-5, 2-3-7-6,
 /// 3-4-8-7, 1-5-8-4, 1-4-3-2, 5-6-7-8. TET4 (1-based): 1-2-4, 2-3-4, 1-4-3, 1-3-2.
+/// Quadratic cells: those corners, then the side's edge (and face centre)
+/// nodes in cell node order (a node set for matching, not the face's order:
+/// fem::faceLocalNodes gives that).
 const std::vector<int>& exodusSideNodes(mesh::CellType type, int side);
 
 }  // namespace coulomb::io

@@ -36,7 +36,7 @@ std::vector<ContactFace> collectFaces(const mesh::Mesh& mesh, const mesh::SideSe
     if (!seen.insert({face.element, face.side}).second) continue;
     const std::size_t b = mesh.blockOfElement(face.element);
     const mesh::ElementBlock& block = global.blocks[b];
-    std::array<int, 4> local{};
+    std::array<int, mesh::kMaxFaceNodes> local{};
     try {
       face.type = fem::faceType(block.cellType, face.side);
       face.numNodes = fem::faceLocalNodes(block.cellType, face.side, local);
@@ -44,6 +44,14 @@ std::vector<ContactFace> collectFaces(const mesh::Mesh& mesh, const mesh::SideSe
       throw Error(what + ": " + role + " side set '" + shown + "', element " + std::to_string(face.element + 1) +
                   ": " + e.what());
     }
+    // The dual mortar basis, the segments and the nodal normals are built
+    // for linear faces; quadratic faces need their own dual basis (a later
+    // step), so a pair refuses them rather than treating them as linear.
+    COULOMB_REQUIRE(!mesh::isQuadratic(face.type),
+                    what << ": " << role << " side set '" << shown << "' is on element block '"
+                         << mesh::displayName(block.name, "block", block.id) << "' of "
+                         << mesh::toString(block.cellType) << " cells: contact on quadratic faces ("
+                         << mesh::toString(face.type) << ") is not supported yet");
     // A face with an element on its other side is inside a body (a merged
     // interface, or a set drawn through a body): it can never touch anything.
     const long long across = fem::elementAcrossFace(global, adjacency, face.element, face.side);
