@@ -109,7 +109,9 @@ int main(int argc, char** argv) {
     coulomb::solver::Simulation simulation(arguments.deck, comm, &std::cout, arguments.output, arguments.mesh);
     if (arguments.check) {
       // Everything a run reads and checks before its first step has been
-      // read and checked by the constructor; the result file is opened by run().
+      // read and checked by the constructor but the result's folder: run()
+      // creates the file, --check only asks whether it could.
+      simulation.checkOutputFolder();
       if (root) {
         std::cout << "coulomb: " << arguments.deck << " is valid\n";
         coulomb::solver::printProblemSize(std::cout, simulation.problemSize());

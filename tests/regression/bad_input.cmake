@@ -83,8 +83,8 @@ coulomb_bad_input(mesh_2d_cells_in_3d_file "quad4_in_3d_file[.]e': element block
 coulomb_bad_input(mesh_absurd_node_count
                   "absurd_node_count[.]e': 2000000000 nodes and 2 elements need at least .* but .* are available"
                   NP 1 2 CDL absurd_node_count.cdl)
-coulomb_bad_input(output_folder_missing "exodus output '/no_such_folder/result[.]e[.]part': the folder '/no_such_folder' does not exist" NP 1 2)
-coulomb_bad_input(output_folder_not_writable "exodus output '/proc/sys/result[.]e[.]part': the folder '/proc/sys' is not writable" NP 1 2)
+coulomb_bad_input(output_folder_missing "exodus output '/no_such_folder/result[.]e[.]part': the folder '/no_such_folder' does not exist" CHECK NP 1 2)
+coulomb_bad_input(output_folder_not_writable "exodus output '/proc/sys/result[.]e[.]part': the folder '/proc/sys' is not writable" CHECK NP 1 2)
 coulomb_bad_input(deck_2d_on_3d_mesh "'Problem/Plane Assumption' is for 2D meshes, but the mesh is 3D" NP 1 2)
 coulomb_bad_input(deck_thickness_on_3d_mesh "'Element Blocks/body/Thickness' is for 2D meshes, but the mesh is 3D" NP 1 2)
 

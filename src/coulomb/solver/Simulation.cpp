@@ -23,6 +23,7 @@
 #include "coulomb/fem/ModelSettings.hpp"
 #include "coulomb/fem/RigidBodyModes.hpp"
 #include "coulomb/io/ExodusReader.hpp"
+#include "coulomb/io/ExodusWriter.hpp"
 #include "coulomb/mesh/Mesh.hpp"
 #include "coulomb/solver/LinearSolverFactory.hpp"
 #include "coulomb/solver/ModelEvaluator.hpp"
@@ -143,6 +144,19 @@ Simulation::~Simulation() = default;
 void Simulation::setVerbosity(Verbosity verbosity) {
   verbosity_ = verbosity;
   solvers_->newton->setConsole(verbosity == Verbosity::Verbose ? console_ : nullptr);
+}
+
+void Simulation::checkOutputFolder() const {
+  // Rank 0 writes the result: its view of the file system is the one that counts.
+  std::string failure;
+  if (comm_->getRank() == 0) {
+    try {
+      io::checkOutputFolder(ResultWriter::partialPath(settings_.outputFile));
+    } catch (const Error& e) {
+      failure = e.what();
+    }
+  }
+  throwIfAnyRankFailed(*comm_, failure);
 }
 
 ProblemSize Simulation::problemSize() const {

@@ -69,6 +69,9 @@ public:
   /// Nodes, elements, DoFs, blocks, contact pairs with their face counts,
   /// load stepping and files, as read (`coulomb --check`, the run's summary).
   ProblemSize problemSize() const;
+  /// Collective: the result file's folder exists and is writable (what run()
+  /// needs first; `coulomb --check` asks without writing); coulomb::Error otherwise.
+  void checkOutputFolder() const;
 
   /// The converged displacement (owned map) after run().
   const Vector& displacement() const { return *displacement_; }
