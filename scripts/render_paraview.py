@@ -268,7 +268,9 @@ def main():
             # values (a categorical table has nothing between its values).
             display.InterpolateScalarsBeforeMapping = 0
             display.LineWidth = 6
-            nodes = Show(surface, view)
+            # A second proxy: Show() of the same one in a view returns the
+            # same representation, and "Points" would replace the faces.
+            nodes = Show(MergeBlocks(Input=surface), view)
             nodes.Representation = "Points"
             nodes.RenderPointsAsSpheres = 1
             nodes.PointSize = 10
