@@ -42,6 +42,8 @@ def launch(args, run_dir, exe, exe_args):
     stderr.txt. Returns a dict: rc (None = killed at --timeout), stdout, wall,
     rss (list over ranks, MB), cpu, other (CPU s of other processes),
     waited, load_before."""
+    # --verbose: the benchmarks read the Newton iteration table (bench_console.py)
+    exe_args = list(exe_args) + ["--verbose"]
     outer = ["/usr/bin/time", "-v", "-o", os.path.join(run_dir, "time.txt")]
     if args.np == 1:
         command = outer + [exe] + exe_args

@@ -8,17 +8,18 @@
 #       (a DECK_STEM.e.part is tolerated: it is only ever a partial result).
 #
 # usage: expect_error.sh --exe COULOMB --workdir DIR [--meshes DIR] [--cdl FILE]...
-#                        [--timeout SECONDS] REGEX DECK NP MPIRUN [MPIRUN_ARGS...]
+#                        [--timeout SECONDS] [--arg ARG]... REGEX DECK NP MPIRUN [MPIRUN_ARGS...]
 #
 # DIR is emptied and the deck copied into it, with "@MESH_DIR@" replaced by
 # the --meshes folder; each --cdl FILE.cdl becomes DIR/FILE.e (ncgen), so a
 # deck names such a mesh by its bare file name. REGEX is an extended regular
-# expression (grep -E). The run is: MPIRUN... -np NP COULOMB DIR/DECK.
+# expression (grep -E). The run is: MPIRUN... -np NP COULOMB DIR/DECK ARG...
+# (each --arg, e.g. --check: the same errors before any solve).
 # Exit codes: 0 pass, 1 fail, 77 skipped (a tool the test needs is missing).
 set -u
 
 exe="" workdir="" meshes="" timeout_seconds=50
-cdls=()
+cdls=() coulomb_args=()
 while [[ $# -gt 0 && $1 == --* ]]; do
   case $1 in
     --exe) exe=$2; shift 2 ;;
@@ -26,6 +27,7 @@ while [[ $# -gt 0 && $1 == --* ]]; do
     --meshes) meshes=$2; shift 2 ;;
     --cdl) cdls+=("$2"); shift 2 ;;
     --timeout) timeout_seconds=$2; shift 2 ;;
+    --arg) coulomb_args+=("$2"); shift 2 ;;
     *) echo "expect_error.sh: unknown option $1" >&2; exit 1 ;;
   esac
 done
@@ -65,7 +67,7 @@ for cdl in "${cdls[@]+"${cdls[@]}"}"; do
   ncgen -k "${kind:-classic}" -o "$workdir/$(basename -- "$cdl" .cdl).e" "$cdl" || { echo "FAIL: ncgen $cdl"; exit 1; }
 done
 
-command=("${mpirun[@]}" -np "$np" "$exe" "$deck")
+command=("${mpirun[@]}" -np "$np" "$exe" "$deck" "${coulomb_args[@]+"${coulomb_args[@]}"}")
 echo "deck:     $deck_source"
 echo "run:      ${command[*]}"
 echo "expect:   one line 'coulomb: error: ...' matching /$regex/"

@@ -366,6 +366,14 @@ void ContactModel::nodalFields(const Teuchos::RCP<const Map>& ownedNodeMap, Mult
     }
 }
 
+namespace {
+
+bool hasUniformCoefficient(const ContactPairSettings& s) {
+  return s.friction.type == FrictionLawType::Coulomb && s.frictionCoefficientField.empty();
+}
+
+}  // namespace
+
 std::vector<std::string> ContactModel::globalNames() const {
   std::vector<std::string> names;
   for (const auto& pair : pairs_) {
@@ -375,6 +383,8 @@ std::vector<std::string> ContactModel::globalNames() const {
       names.push_back("contact_normal_force_" + pair->settings().name);
       names.push_back("contact_tangential_force_" + pair->settings().name);
       names.push_back("contact_stick_nodes_" + pair->settings().name);
+      // mu beside Q/P (scripts/plot_contact.py draws it): uniform Coulomb only.
+      if (hasUniformCoefficient(pair->settings())) names.push_back("contact_friction_coefficient_" + pair->settings().name);
     }
   }
   return names;
@@ -395,6 +405,7 @@ std::vector<double> ContactModel::globals() const {
       values.push_back(std::sqrt(normal2));
       values.push_back(std::sqrt(tangential2));
       values.push_back(static_cast<double>(s.activeSet.stick));
+      if (hasUniformCoefficient(pairs_[p]->settings())) values.push_back(pairs_[p]->settings().friction.coefficient);
     }
   }
   return values;

@@ -115,6 +115,16 @@ void checkNames(const std::string& path, const char* kind, const std::vector<std
 
 }  // namespace
 
+void checkOutputFolder(const std::string& path) {
+  const std::filesystem::path folder = std::filesystem::absolute(path).parent_path();
+  std::error_code ignored;
+  COULOMB_REQUIRE(std::filesystem::is_directory(folder, ignored),
+                  "exodus output '" << path << "': the folder '" << folder.string() << "' does not exist");
+  COULOMB_REQUIRE(::access(folder.c_str(), W_OK) == 0, "exodus output '" << path << "': the folder '"
+                                                                        << folder.string() << "' is not writable ("
+                                                                        << std::strerror(errno) << ")");
+}
+
 ExodusWriter::ExodusWriter(const std::string& path, const mesh::GlobalMesh& mesh,
                            std::vector<std::string> nodalVariableNames, std::vector<std::string> globalVariableNames,
                            const std::string& title)
@@ -139,13 +149,7 @@ ExodusWriter::ExodusWriter(const std::string& path, const mesh::GlobalMesh& mesh
   if (fileId_ < 0) {
     // Say why in the user's words: the folder is missing or not writable
     // (netCDF's own message names neither).
-    const std::filesystem::path folder = std::filesystem::absolute(path_).parent_path();
-    std::error_code ignored;
-    COULOMB_REQUIRE(std::filesystem::is_directory(folder, ignored),
-                    "exodus output '" << path_ << "': the folder '" << folder.string() << "' does not exist");
-    COULOMB_REQUIRE(::access(folder.c_str(), W_OK) == 0, "exodus output '" << path_ << "': the folder '"
-                                                                          << folder.string() << "' is not writable ("
-                                                                          << std::strerror(errno) << ")");
+    checkOutputFolder(path_);
     throw Error("exodus output '" + path_ + "': cannot create the file (" + lastExodusError() + ")");
   }
   try {

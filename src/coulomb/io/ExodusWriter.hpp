@@ -22,6 +22,10 @@
 
 namespace coulomb::io {
 
+/// @brief Throws coulomb::Error naming the folder of `path` when it is
+/// missing or not writable (what a failed create means to a user).
+void checkOutputFolder(const std::string& path);
+
 class ExodusWriter {
 public:
   /// Creates @p path (overwriting it), writes the title, coordinates, element

@@ -82,6 +82,8 @@ public:
   /// `directSolver`: the linear solver factors the matrix (Amesos2): a
   /// preconditioner is never reused.
   void setDirectSolver(bool direct) { directSolver_ = direct; }
+  /// Where the iteration table goes (null: nowhere; `coulomb --verbose` shows it).
+  void setConsole(std::ostream* console) { console_ = console; }
 
   /// Solves f(u) = 0 starting from `u`; on return `u` holds the last iterate.
   NewtonReport solve(Vector& u);

@@ -1,6 +1,7 @@
 #include "coulomb/solver/Simulation.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <set>
@@ -22,6 +23,7 @@
 #include "coulomb/fem/ModelSettings.hpp"
 #include "coulomb/fem/RigidBodyModes.hpp"
 #include "coulomb/io/ExodusReader.hpp"
+#include "coulomb/io/ExodusWriter.hpp"
 #include "coulomb/mesh/Mesh.hpp"
 #include "coulomb/solver/LinearSolverFactory.hpp"
 #include "coulomb/solver/ModelEvaluator.hpp"
@@ -116,8 +118,9 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
                                                     [s] { setMueLuUserData(s->linear, s->nullspace, s->coordinates); },
                                                     contact_.get()));
   solvers_->model->reuseConstantTangent(settings_.reuseConstantTangent);
-  solvers_->newton = std::make_unique<NewtonSolver>(solvers_->model, settings_.nonlinearSolver, settings_.newton, console_,
-                                                    contact_.get());
+  // The iteration table is for --verbose (setVerbosity).
+  solvers_->newton = std::make_unique<NewtonSolver>(solvers_->model, settings_.nonlinearSolver, settings_.newton,
+                                                    nullptr, contact_.get());
   solvers_->newton->setDirectSolver(solvers_->linear.isDirect);
   displacement_ = Teuchos::rcp(new Vector(dofs_->ownedMap()));
   reactions_ = Teuchos::rcp(new Vector(dofs_->ownedMap()));
@@ -137,6 +140,61 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
 }
 
 Simulation::~Simulation() = default;
+
+void Simulation::setVerbosity(Verbosity verbosity) {
+  verbosity_ = verbosity;
+  solvers_->newton->setConsole(verbosity == Verbosity::Verbose ? console_ : nullptr);
+}
+
+void Simulation::checkOutputFolder() const {
+  // Rank 0 writes the result: its view of the file system is the one that counts.
+  std::string failure;
+  if (comm_->getRank() == 0) {
+    try {
+      io::checkOutputFolder(ResultWriter::partialPath(settings_.outputFile));
+    } catch (const Error& e) {
+      failure = e.what();
+    }
+  }
+  throwIfAnyRankFailed(*comm_, failure);
+}
+
+ProblemSize Simulation::problemSize() const {
+  const auto& global = mesh_->global();
+  ProblemSize size;
+  size.dimension = global.dimension;
+  size.nodes = global.numNodes();
+  size.elements = global.numElements();
+  size.dofs = static_cast<long long>(dofs_->ownedMap()->getGlobalNumElements());
+  for (const auto& block : global.blocks) size.blocks.push_back(mesh::displayName(block.name, "block", block.id));
+  size.numberOfSteps = settings_.numberOfSteps;
+  size.finalTime = settings_.finalTime;
+  size.meshFile = settings_.meshFile;
+  size.outputFile = settings_.outputFile;
+  for (std::size_t p = 0; contact_ && p < contact_->pairs().size(); ++p) {
+    const auto& pair = *contact_->pairs()[p];
+    const auto& s = pair.settings();
+    PairDescription d;
+    d.name = s.name;
+    d.slave = s.slave;
+    d.master = s.master;
+    d.formulation = contact::toString(s.formulation);
+    d.frictional = pair.frictional();
+    std::ostringstream law;
+    if (!d.frictional) law << "frictionless";
+    else if (!s.frictionCoefficientField.empty()) law << "Coulomb friction, mu from the field '" << s.frictionCoefficientField << "'";
+    else if (s.friction.type == contact::FrictionLawType::Coulomb) {
+      law << "Coulomb friction mu = " << s.friction.coefficient;
+      d.mu = s.friction.coefficient;
+    } else law << contact::toString(s.friction.type) << " friction, threshold " << s.friction.threshold;
+    d.law = law.str();
+    d.slaveFaces = static_cast<long long>(pair.interface().slaveFaces().size());
+    d.masterFaces = static_cast<long long>(pair.interface().masterFaces().size());
+    d.slaveNodes = static_cast<long long>(pair.interface().slaveNodes().size());
+    size.pairs.push_back(d);
+  }
+  return size;
+}
 
 std::vector<double> Simulation::reactionTotal(const std::string& nodeSet) const {
   const int dim = mesh_->dimension();
@@ -181,16 +239,36 @@ void Simulation::writeStep(double time, const std::vector<double>& stepGlobals) 
   }
 }
 
-void Simulation::reportContact(RunSummary& summary) {
+void Simulation::reportContact(RunSummary& summary, double time) {
   const int dim = mesh_->dimension();
   summary.pairMaximumActive.resize(contact_->pairs().size(), 0);
+  summary.pairs.resize(contact_->pairs().size());
   for (std::size_t p = 0; p < contact_->pairs().size(); ++p) {
     const auto& pair = contact_->pairSummaries()[p];
     const auto active = static_cast<long long>(pair.activeSet.active);
     summary.pairMaximumActive[p] = std::max(summary.pairMaximumActive[p], active);
+    // The summary's record: the peak over the owned slave nodes of all ranks.
+    auto& record = summary.pairs[p];
+    double peak = 0, globalPeak = 0;
+    for (const auto& o : contact_->pairs()[p]->nodeOutput()) peak = std::max(peak, o.pressure);
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, 1, &peak, &globalPeak);
+    if (globalPeak > record.peakPressure) {
+      record.peakPressure = globalPeak;
+      record.peakTime = time;
+    }
+    double normal2 = 0, tangential2 = 0;
+    for (int c = 0; c < 3; ++c) {
+      normal2 += pair.normalForce[c] * pair.normalForce[c];
+      tangential2 += pair.tangentialForce[c] * pair.tangentialForce[c];
+    }
+    record.normalForce = std::sqrt(normal2);
+    record.tangentialForce = std::sqrt(tangential2);
+    record.active = active;
+    record.stick = static_cast<long long>(pair.activeSet.stick);
     const auto notes = contact_->pairs()[p]->takeNotes();
     if (!console_) continue;
     for (const auto& note : notes) *console_ << "  note: " << note << "\n";
+    if (verbosity_ == Verbosity::Quiet) continue;
     *console_ << "  contact '" << contact_->pairs()[p]->settings().name << "': " << active << " active nodes, force (";
     for (int c = 0; c < dim; ++c) *console_ << (c ? ", " : "") << std::setprecision(6) << pair.slaveForce[c];
     *console_ << ")\n" << std::defaultfloat;
@@ -262,12 +340,21 @@ RunSummary Simulation::run() {
             << ResultWriter::partialPath(settings_.outputFile);
     throw Error(message.str());
   };
+  const RunClock clock(steps.time(), settings_.finalTime);
+  // "step n of N": the deck's step the (sub-)step leads to, N the deck's steps.
+  auto progress = [&](double reached) {
+    return formatDuration(clock.elapsedSeconds()) + " elapsed, " + clock.timeLeft(reached);
+  };
   while (!steps.finished()) {
     const double time = steps.time(), next = steps.nextTime();
     stopIfInterrupted(time, next);
-    if (console_)
-      *console_ << "step " << summary.steps + 1 << "  t = " << std::setprecision(6) << next << "  (dt = " << next - time
-                << ", deck step " << steps.nominalStep() << " of " << settings_.numberOfSteps << ")\n";
+    const double nominalDt = settings_.finalTime / settings_.numberOfSteps;
+    const int deckStep = steps.nominalStep();
+    // Shorter than the deck's step: after a cutback, or before a load function's knot.
+    const bool subStep = next - time < nominalDt * (1 - 1e-12);
+    if (console_ && verbosity_ != Verbosity::Quiet)
+      *console_ << "step " << deckStep << " of " << settings_.numberOfSteps << "  t = " << std::setprecision(6) << next
+                << "  (" << (subStep ? "sub-step, " : "") << "dt = " << next - time << ")  " << progress(time) << "\n";
     const auto stepStart = std::chrono::steady_clock::now();
     auto attempt = [&](bool extrapolate) {
       trial.assign(*displacement_);
@@ -349,7 +436,11 @@ RunSummary Simulation::run() {
     summary.stepStickSlipChanged.push_back(stickSlip);
     summary.stepPreconditionerKept.push_back(kept);
     writeStep(next, {double(iterations), double(report.linearIterations()), double(summary.cutbacks)});
-    if (console_)
+    if (console_ && verbosity_ == Verbosity::Quiet)
+      *console_ << "step " << deckStep << " of " << settings_.numberOfSteps
+                << "  t = " << std::setprecision(6) << next << "  " << iterations << " Newton / "
+                << report.linearIterations() << " linear  " << progress(next) << "\n";
+    else if (console_)
       *console_ << "  step " << summary.steps << " converged: t = " << next << ", " << iterations << " Newton / "
                 << report.linearIterations() << " linear iterations, |f| = " << std::scientific << std::setprecision(2)
                 << report.iterations.back().residualNorm << std::defaultfloat << ", " << std::fixed
@@ -358,7 +449,7 @@ RunSummary Simulation::run() {
                         ? ", preconditioner kept in " + std::to_string(report.preconditionerReuses()) + " solves"
                         : std::string())
                 << "\n";
-    if (contact_) reportContact(summary);
+    if (contact_) reportContact(summary, next);
   }
   solvers_->writer->finish();
   if (contact_ && console_)
@@ -373,6 +464,9 @@ RunSummary Simulation::run() {
     *console_ << "coulomb: " << summary.steps << " steps, " << summary.newtonIterations << " Newton and "
               << summary.linearIterations << " linear iterations, " << summary.cutbacks << " cutbacks, "
               << std::fixed << std::setprecision(2) << summary.wallSeconds << " s" << std::defaultfloat << "\n";
+  if (console_)
+    printRunSummary(*console_, problemSize(), summary.pairs, summary.steps, summary.cutbacks, steps.time(),
+                    summary.wallSeconds);
   return summary;
 }
 

@@ -12,6 +12,8 @@
 
 #include "coulomb/core/TpetraTypes.hpp"
 #include "coulomb/solver/Deck.hpp"
+#include "coulomb/solver/Progress.hpp"
+#include "coulomb/solver/RunReport.hpp"
 
 namespace coulomb::mesh {
 class Mesh;
@@ -46,6 +48,7 @@ struct RunSummary {
   /// contact: 1 where the solve that led to the iterate kept the last preconditioner (row 0: 0)
   std::vector<std::vector<int>> stepPreconditionerKept;
   std::vector<long long> pairMaximumActive;              ///< contact: most active nodes of each pair in a step
+  std::vector<PairRecord> pairs;  ///< contact: per pair, peak pressure and the last step's forces (the summary's)
 };
 
 class Simulation {
@@ -60,6 +63,15 @@ public:
 
   /// Runs all load steps and writes the result. Collective.
   RunSummary run();
+
+  /// Console detail of run() (Normal unless set).
+  void setVerbosity(Verbosity verbosity);
+  /// Nodes, elements, DoFs, blocks, contact pairs with their face counts,
+  /// load stepping and files, as read (`coulomb --check`, the run's summary).
+  ProblemSize problemSize() const;
+  /// Collective: the result file's folder exists and is writable (what run()
+  /// needs first; `coulomb --check` asks without writing); coulomb::Error otherwise.
+  void checkOutputFolder() const;
 
   /// The converged displacement (owned map) after run().
   const Vector& displacement() const { return *displacement_; }
@@ -80,13 +92,14 @@ private:
   struct Solvers;
   void writeStep(double time, const std::vector<double>& stepGlobals);
   /// Console line per contact pair after a converged step; records the active counts.
-  void reportContact(RunSummary& summary);
+  void reportContact(RunSummary& summary, double time);
   /// One Newton solve of a step from `trial` (displacements; the multipliers
   /// too in the saddle-point form, kept in saddlePointState_).
   NewtonReport solve(Vector& trial);
 
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   std::ostream* console_;
+  Verbosity verbosity_ = Verbosity::Normal;
   RunSettings settings_;
   std::unique_ptr<mesh::Mesh> mesh_;
   std::unique_ptr<fem::DofMap> dofs_;
