@@ -12,10 +12,10 @@
 namespace coulomb::contact {
 
 /// @brief The Newton system with the multipliers as unknowns (deck
-/// `Contact/System Form` = Saddle Point; formulation/SaddlePoint.cpp): per
-/// slave node j a vector unknown z_j = (k / eps_n) lambda_j (a length, so that
-/// its columns t eps_n D_j are of the size of the stiffness), and the rows
-/// R_j = (eps_n t / k) r_lambda_j of NodalContactLaw (4.72b, components form):
+/// `Contact/System Form` = Saddle Point; formulation/LagrangeNcp.cpp): per
+/// slave node j a vector unknown z_j = (k / c_n) lambda_j (a length, so that
+/// its columns t c_n D_j are of the size of the stiffness), and the rows
+/// R_j = t D_j C_j of the NCP functions (4.79, laws/NcpNode.hpp):
 ///   [K + K_c   C] [du]     [r - f_c]
 ///   [  R_u   R_z] [dz] = - [  R    ]
 struct MultiplierBlock {

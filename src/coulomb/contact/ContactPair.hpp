@@ -16,7 +16,7 @@
 /// condensation of the dual multipliers, D diagonal), and lambda_n is
 /// recovered from the slave rows of the bulk residual,
 ///   lambda_n,j = a_j . r_{j,F} / (k t D_j |n_F|)   (equilibrium of the a-row).
-/// Penalty pairs: T = I, f_c = the penalty forces of NodalContactLaw.
+/// Penalty pairs: T = I, f_c = the penalty forces (formulation/Penalty.cpp).
 /// t is the 2D thickness (1 in 3D): contact forces scale like the bulk.
 ///
 /// Prescribed DoFs keep their identity rows (nothing is added to them) and

@@ -18,11 +18,9 @@ std::unique_ptr<Formulation> makeAlmFrictional(const PairConstants& constants);
 /// Penalty, with or without friction (Penalty.cpp).
 template <int dim>
 std::unique_ptr<Formulation> makePenalty(const PairConstants& constants);
-/// ALM frictionless with the multipliers as unknowns (SaddlePoint.cpp).
-template <int dim>
-std::unique_ptr<Formulation> makeSaddlePoint(const PairConstants& constants);
 /// Lagrange multipliers with the NCP functions (4.79), frictionless and
-/// frictional, multipliers as unknowns (LagrangeNcp.cpp).
+/// frictional, multipliers as unknowns; also ALM frictionless pairs in the
+/// saddle-point form (LagrangeNcp.cpp).
 template <int dim>
 std::unique_ptr<Formulation> makeLagrangeNcp(const PairConstants& constants);
 

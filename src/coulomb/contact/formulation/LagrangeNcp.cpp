@@ -6,8 +6,10 @@
 /// NCP functions of laws/NcpNode.hpp, frictionless or with friction. The
 /// penalty-like parameters c_n = eps_n, c_tau = kappa eps_n only shape the
 /// semi-smooth Newton path: the converged answer has no penalty in it.
-/// Per node the unknown is z_j = (k / c_n) lambda_j (a length, as in
-/// SaddlePoint.cpp) and the rows are R_j = t D_j C_j (a force).
+/// Per node the unknown is z_j = (k / c_n) lambda_j (a length) and the rows
+/// are R_j = t D_j C_j (a force). A frictionless ALM pair in the saddle-point
+/// form is this formulation with c_n = eps_n (FormulationFactory.cpp): the
+/// check that the condensation is exact (tests/unit/contact_saddle_point_mpi.cpp).
 #include "coulomb/contact/formulation/Formulations.hpp"
 #include "coulomb/contact/laws/CondensationFrame.hpp"
 #include "coulomb/contact/laws/NcpNode.hpp"
@@ -26,8 +28,8 @@ public:
 
   ContactState decide(const SlaveNode& n, ContactState previous, bool updateSet,
                       PairIterationSummary& summary) const override {
-    // As in SaddlePoint.cpp: a node whose free components cannot carry its
-    // normal multiplier stays open.
+    // As in the condensed forms: a node whose free components cannot carry
+    // its normal multiplier stays open (CondensationFrame::usable).
     if (!usable(n)) {
       n.state->lambdaN = n.state->pressure = n.state->augmentedPressure = 0.0;
       n.state->traction = n.state->augmentedTraction = {0.0, 0.0, 0.0};

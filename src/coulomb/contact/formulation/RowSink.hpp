@@ -48,7 +48,7 @@ private:
   GlobalOrdinal multiplierOffset_;
 };
 
-/// The forms with the multipliers as unknowns (SaddlePoint, LagrangeNcp):
+/// The forms with the multipliers as unknowns (LagrangeNcp):
 /// the forces of slave node `slave` (global `node`, Dirichlet components
 /// `prescribed`) on the bodies, slave k t D lambda, master -k t M_jl lambda,
 /// with lambda = (z / toUnknown) the node's multiplier: the displacement

@@ -3,7 +3,7 @@
 /// @brief Contact state of one slave node and the active-set update rule of the
 /// augmented Lagrangian (ALM) and penalty formulations, frictionless part.
 ///
-/// Conventions (see NodalContactLaw.hpp for the full derivation):
+/// Conventions:
 ///  * g~_j is the weighted gap of MortarPass (g~ = -n.(D x^1 - M x^2), > 0 open),
 ///    D_j the diagonal dual-mortar entry; g_j = g~_j / D_j is the nodal
 ///    (pointwise) gap, a length.
@@ -17,12 +17,22 @@
 ///  * eps_n is a physical penalty (pressure per length, e.g. defaultPenalty).
 ///    With the nodal penalty eps^_j = eps_n / D_j the seed's nodal formulas
 ///    (4.72b, 4.74) hold literally with weighted gaps: k lambda_n + eps^_j g~_j.
+///  * Contact forces ACTING ON the bodies (external loads, subtracted from the
+///    residual r_u = f_int - f_ext): slave node j f_j = k t D_j lambda_j,
+///    master node l f_l = -k t M_jl lambda_j (t the 2D thickness). With
+///    lambda_n < 0 f_j points away from the master (n points from the slave
+///    towards it): compression pushes the bodies apart, and for a matching
+///    interface (M_jl = D_j delta_jl) f_j + f_l = 0. (4.72a) prints the
+///    opposite signs (+k D^T on the slave rows), consistent with lambda_n >= 0
+///    in compression; with the seed's own zone lambdā_n <= 0 (4.60a, 4.74)
+///    that force would attract, so the signs here are those of the
+///    functional's coupling term k lambda.(M x^2 - D x^1).
 ///
 /// Update rule (seed 4.73/4.74, ALM): augmented normal multiplier
 ///   lambdā_n = k n.lambda + eps_n g~_j / D_j ;  active iff lambdā_n <= 0.
 /// The contact zone is lambdā_n <= 0 as in (4.60a); (4.73) writes the active set
 /// with a strict "< 0": the two differ only at lambdā_n = 0 exactly, where both
-/// branches of the residual agree (NodalContactLaw.hpp), so the choice is
+/// branches of the rows agree (k lambda_n = -eps_n g~ / D), so the choice is
 /// immaterial for the solution; we follow (4.60a).
 /// Penalty (4.74): threshold eps_n g~_j, active iff g~_j <= 0.
 #include <cstddef>

@@ -2,10 +2,16 @@
 
 #include <algorithm>
 
-#include "coulomb/contact/laws/NodalContactLaw.hpp"
 #include "coulomb/core/Error.hpp"
 
 namespace coulomb::contact {
+
+double defaultPenalty(double E, double h, double factor) {
+  COULOMB_CHECK(E > 0.0, "contact penalty: Young's modulus must be > 0, got " << E);
+  COULOMB_CHECK(h > 0.0, "contact penalty: element size must be > 0, got " << h);
+  COULOMB_CHECK(factor > 0.0, "contact penalty: penalty factor must be > 0, got " << factor);
+  return factor * E / h;
+}
 
 double meanFaceDiameter(const std::vector<PenaltyFace>& faces) {
   double sum = 0;

@@ -39,6 +39,16 @@ struct PenaltyFace {
   double modulus = 0;                      ///< Young's modulus of its element
 };
 
+/// The mean diameter of `faces` (0 for none): the pair's face size h.
+double meanFaceDiameter(const std::vector<PenaltyFace>& faces);
+
+/// @brief eps_n = factor × E / h (pressure / length): E / h is the stiffness
+/// per unit area of a layer of the body one element (h) thick, so a contact
+/// pressure p penetrates about (p / E) h, a fraction p / E of an element,
+/// while the penalty term stays of the order of the element stiffness (no
+/// extra ill-conditioning). Requires E, h, factor > 0 (InternalError).
+double defaultPenalty(double E, double h, double factor = 1.0);
+
 /// @brief eps_n,j = factor × E_j / h_j for nodes 0 … numNodes - 1, with h_j
 /// the mean diameter of the faces at node j (LocalFaces) or of all faces
 /// (PairMean), and E_j = min(E_s,j, E_master),
@@ -48,9 +58,6 @@ struct PenaltyFace {
 /// When one of the two is not positive, the other. A node on no face gets 0.
 /// @throws coulomb::Error when a face at a node has a non-positive diameter
 /// or modulus, or factor ≤ 0 (defaultPenalty).
-/// The mean diameter of `faces` (0 for none): the pair's face size h.
-double meanFaceDiameter(const std::vector<PenaltyFace>& faces);
-
 std::vector<double> automaticNodalPenalty(const std::vector<PenaltyFace>& faces, int numNodes, double masterModulus,
                                           double factor, PenaltySize size);
 
