@@ -45,6 +45,8 @@ seed() {  # seed <harness> <corpus dir>
   esac
 }
 
+# Leaks of third-party code that only the harnesses call (each explained there).
+export LSAN_OPTIONS="suppressions=$here/tests/fuzz/lsan_fuzz.supp:print_suppressions=0${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 status=0
 printf '%-7s %12s %8s %8s %9s %8s\n' harness executions seeds corpus seconds findings
 for harness in "${harnesses[@]}"; do

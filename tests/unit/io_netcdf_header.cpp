@@ -1,6 +1,7 @@
 // The classic netCDF header check before ex_open (io/NetcdfHeaderCheck.hpp):
 // a shipped mesh passes; a count corrupted past the file's size, an unknown
-// attribute type and a header cut short are named, and readExodus reports
+// attribute type, a header cut short, and a variable whose dimensions or
+// type would make netCDF divide by zero are named, and readExodus reports
 // them as one error instead of netCDF allocating what the count declares.
 #include <gtest/gtest.h>
 
@@ -54,6 +55,41 @@ TEST(NetcdfHeader, CutInsideTheHeaderIsNamed) {
   bytes.resize(14);  // inside the dimension count
   problem = coulomb::io::classicNetcdfHeaderProblem(bytes, bytes.size());
   EXPECT_NE(problem.find("the file ends inside the dimension count"), std::string::npos) << problem;
+}
+
+/// A CDF-1 header: dimensions "t" (the record dimension, length 0) and "n"
+/// (3), one variable "v" of type `type` on the dimension ids `dims`.
+std::vector<unsigned char> oneVariable(std::vector<std::uint32_t> dims, std::uint32_t type) {
+  std::vector<unsigned char> bytes{'C', 'D', 'F', 1};
+  auto word = [&bytes](std::uint32_t value) {
+    bytes.resize(bytes.size() + 4);
+    putWord(bytes, bytes.size() - 4, value);
+  };
+  auto name = [&](char c) { word(1), bytes.insert(bytes.end(), {static_cast<unsigned char>(c), 0, 0, 0}); };
+  word(0);                   // records
+  word(0x0A), word(2);       // two dimensions
+  name('t'), word(0);
+  name('n'), word(3);
+  word(0), word(0);          // no global attributes
+  word(0x0B), word(1);       // one variable
+  name('v'), word(static_cast<std::uint32_t>(dims.size()));
+  for (auto d : dims) word(d);
+  word(0), word(0);          // no attributes
+  word(type), word(24), word(static_cast<std::uint32_t>(bytes.size() + 8));
+  bytes.resize(bytes.size() + 24);  // the data
+  return bytes;
+}
+
+TEST(NetcdfHeader, DimensionsThatWouldDivideByZeroAreNamed) {
+  auto problem = [](std::vector<std::uint32_t> dims, std::uint32_t type) {
+    const auto bytes = oneVariable(std::move(dims), type);
+    return coulomb::io::classicNetcdfHeaderProblem(bytes, bytes.size());
+  };
+  EXPECT_EQ(problem({0, 1}, 6), "");  // the record dimension first: a record variable
+  EXPECT_NE(problem({1, 0}, 6).find("variable 'v' has the record dimension in place 2"), std::string::npos)
+      << problem({1, 0}, 6);
+  EXPECT_NE(problem({1, 7}, 6).find("variable 'v' names dimension 7 of 2"), std::string::npos);
+  EXPECT_NE(problem({1}, 0).find("variable 'v' has the unknown type 0"), std::string::npos);
 }
 
 TEST(NetcdfHeader, ReadExodusReportsTheDamage) {

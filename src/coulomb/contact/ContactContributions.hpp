@@ -64,6 +64,25 @@ struct PairIterationSummary {
   /// A hash of every slave node's state (the same on every rank and for any
   /// partition): equal sets have equal signatures (ActiveSetCycle).
   std::uint64_t setSignature = 0;
+  /// Every summed value, for the sums over ranks and pairs (`Summary`: this
+  /// type, const or not).
+  template <class Summary>
+  static auto sums(Summary& s) {
+    return std::array{&s.normalResidual2,  &s.contactForce2,     &s.stickResidual2,    &s.slipResidual2,
+                      &s.tangentialForce2, &s.normalIncrement2,  &s.stickIncrement2,   &s.slipIncrement2,
+                      &s.slaveForce[0],    &s.slaveForce[1],     &s.slaveForce[2],     &s.normalForce[0],
+                      &s.normalForce[1],   &s.normalForce[2],    &s.tangentialForce[0], &s.tangentialForce[1],
+                      &s.tangentialForce[2]};
+  }
+  /// Adds another part's sums, counts and violations (not the signature).
+  PairIterationSummary& operator+=(const PairIterationSummary& other) {
+    const auto to = sums(*this);
+    const auto from = sums(other);
+    for (std::size_t i = 0; i < to.size(); ++i) *to[i] += *from[i];
+    activeSet += other.activeSet;
+    violations += other.violations;
+    return *this;
+  }
   /// Adds the force `force` on a slave node, of normal part `normalPart`
   /// (the rest is tangential), to the totals and norms.
   template <std::size_t N>

@@ -83,32 +83,23 @@ template <class UpdatePair>
 void ContactModel::updatePairs(bool freezeSet, UpdatePair&& updatePair) {
   contributions_ = ContactContributions();
   summary_ = ContactIterationSummary();
-  double normal2 = 0, force2 = 0, stick2 = 0, slip2 = 0, tangential2 = 0, dNormal2 = 0, dStick2 = 0, dSlip2 = 0;
+  PairIterationSummary total;
   for (std::size_t p = 0; p < pairs_.size(); ++p) {
     // Simplified semi-smooth Newton: the set moves at the predictor and the first iterate only.
     const bool updateSet =
         !freezeSet && (pairs_[p]->settings().semiSmooth == SemiSmoothNewton::Full || updatesInStep_ < 2);
     pairSummaries_[p] = updatePair(p, updateSet);
-    summary_.activeSet += pairSummaries_[p].activeSet;
-    normal2 += pairSummaries_[p].normalResidual2;
-    force2 += pairSummaries_[p].contactForce2;
-    stick2 += pairSummaries_[p].stickResidual2;
-    slip2 += pairSummaries_[p].slipResidual2;
-    tangential2 += pairSummaries_[p].tangentialForce2;
-    dNormal2 += pairSummaries_[p].normalIncrement2;
-    dStick2 += pairSummaries_[p].stickIncrement2;
-    dSlip2 += pairSummaries_[p].slipIncrement2;
+    total += pairSummaries_[p];
     summary_.frictional = summary_.frictional || pairs_[p]->frictional();
   }
+  summary_.activeSet = total.activeSet;
   ++updatesInStep_;
   // Simplified semi-smooth Newton: a frozen set that the update rule no
   // longer accepts is not converged; it is updated again at the next
   // iterates (as at the start of a step) instead of converging to a state
   // with penetrating or adhesive nodes.
-  long long violations = 0;
-  for (const auto& s : pairSummaries_) violations += s.violations;
-  if (violations > 0) {
-    summary_.activeSet.changed += static_cast<std::size_t>(violations);
+  if (total.violations > 0) {
+    summary_.activeSet.changed += static_cast<std::size_t>(total.violations);
     updatesInStep_ = 0;
   }
   if (!freezeSet) {
@@ -116,14 +107,14 @@ void ContactModel::updatePairs(bool freezeSet, UpdatePair&& updatePair) {
     for (std::size_t p = 0; p < pairs_.size(); ++p) signature += (2 * p + 1) * pairSummaries_[p].setSignature;
     cycle_.record(signature, summary_.activeSet.active, summary_.activeSet.changed + summary_.activeSet.stickSlipChanged);
   }
-  summary_.normalResidual = std::sqrt(normal2);
-  summary_.contactForce = std::sqrt(force2);
-  summary_.stickResidual = std::sqrt(stick2);
-  summary_.slipResidual = std::sqrt(slip2);
-  summary_.tangentialForce = std::sqrt(tangential2);
-  summary_.normalIncrement = std::sqrt(dNormal2);
-  summary_.stickIncrement = std::sqrt(dStick2);
-  summary_.slipIncrement = std::sqrt(dSlip2);
+  summary_.normalResidual = std::sqrt(total.normalResidual2);
+  summary_.contactForce = std::sqrt(total.contactForce2);
+  summary_.stickResidual = std::sqrt(total.stickResidual2);
+  summary_.slipResidual = std::sqrt(total.slipResidual2);
+  summary_.tangentialForce = std::sqrt(total.tangentialForce2);
+  summary_.normalIncrement = std::sqrt(total.normalIncrement2);
+  summary_.stickIncrement = std::sqrt(total.stickIncrement2);
+  summary_.slipIncrement = std::sqrt(total.slipIncrement2);
 }
 
 void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool freezeSet) {
@@ -290,8 +281,7 @@ Teuchos::RCP<CrsMatrix> ContactModel::saddlePointTangent(const CrsMatrix& bulkTa
 bool ContactModel::converged() const {
   if (!summary_.activeSet.unchanged()) return false;
   // (4.78) on the contact rows, or the seed's increment and mixed criteria on the force increments.
-  if (settings_.criterion != ConvergenceCriterion::Residual) return summary_.incrementsConverged(settings_);
-  return summary_.normalConverged(settings_) && summary_.tangentialConverged(settings_);
+  return summary_.criteriaMet(settings_);
 }
 
 std::string ContactModel::unmetCriteria() const {
@@ -308,20 +298,11 @@ std::string ContactModel::unmetCriteria() const {
         << " slave nodes changed state at the last iterate)";
   }
   // The groups of (4.78), or their force increments (Increment, Mixed criteria).
-  const bool increments = t.criterion != ConvergenceCriterion::Residual;
-  const char* measure = increments ? "change of the " : "";
-  auto group = [&](const char* name, double value, double relative, double absolute) {
-    const double limit = relative * s.contactForce + absolute;
-    if (value <= limit) return;
+  const char* measure = t.criterion != ConvergenceCriterion::Residual ? "change of the " : "";
+  for (const auto& c : s.criteria(t)) {
+    if (c.value <= c.limit) continue;
     separate();
-    out << "the " << measure << name << " (" << value << " > " << limit << ")";
-  };
-  group("normal contact rows", increments ? s.normalIncrement : s.normalResidual, t.normalRelativeTolerance,
-        t.normalAbsoluteTolerance);
-  if (s.tangentialForce > t.tangentNormalRatio * s.contactForce) {
-    group("stick rows", increments ? s.stickIncrement : s.stickResidual, t.stickRelativeTolerance,
-          t.stickAbsoluteTolerance);
-    group("slip rows", increments ? s.slipIncrement : s.slipResidual, t.slipRelativeTolerance, t.slipAbsoluteTolerance);
+    out << "the " << measure << c.name << " (" << c.value << " > " << c.limit << ")";
   }
   return out.str();
 }

@@ -32,26 +32,33 @@ struct ContactIterationSummary {
   /// ||change of the nodal contact forces since the last update|| by group
   /// (normal, stick, slip) [force]: PairIterationSummary::normalIncrement2.
   double normalIncrement = 0, stickIncrement = 0, slipIncrement = 0;
-  /// The normal constraint test of ContactSettings.
-  bool normalConverged(const ContactSettings& s) const {
-    return normalResidual <= s.normalRelativeTolerance * contactForce + s.normalAbsoluteTolerance;
+  /// One test of a group: met when value <= limit.
+  struct Criterion {
+    const char* name;
+    double value, limit;
+  };
+  /// The tests in effect (ContactSettings::criterion): the normal group, and
+  /// the stick and slip groups unless the tangential forces are negligible
+  /// against the contact forces (at most the tangential / normal ratio:
+  /// nearly frictionless contact, the seed's normal-tangent ratio; their
+  /// rows stay in the residual test). Residual: the rows of (4.78);
+  /// Increment, Mixed: the change of the nodal contact forces by group.
+  std::vector<Criterion> criteria(const ContactSettings& s) const {
+    const bool increments = s.criterion != ConvergenceCriterion::Residual;
+    std::vector<Criterion> out{{"normal contact rows", increments ? normalIncrement : normalResidual,
+                                s.normalRelativeTolerance * contactForce + s.normalAbsoluteTolerance}};
+    if (tangentialForce <= s.tangentNormalRatio * contactForce) return out;
+    out.push_back({"stick rows", increments ? stickIncrement : stickResidual,
+                   s.stickRelativeTolerance * contactForce + s.stickAbsoluteTolerance});
+    out.push_back({"slip rows", increments ? slipIncrement : slipResidual,
+                   s.slipRelativeTolerance * contactForce + s.slipAbsoluteTolerance});
+    return out;
   }
-  /// The stick and slip tests of (4.78); skipped while the tangential
-  /// forces are negligible against the contact forces (below the tangential /
-  /// normal ratio threshold: nearly frictionless contact, the seed's
-  /// normal-tangent ratio). The stick and slip rows stay in the residual test.
-  bool tangentialConverged(const ContactSettings& s) const {
-    if (tangentialForce <= s.tangentNormalRatio * contactForce) return true;
-    return stickResidual <= s.stickRelativeTolerance * contactForce + s.stickAbsoluteTolerance &&
-           slipResidual <= s.slipRelativeTolerance * contactForce + s.slipAbsoluteTolerance;
-  }
-  /// The same three tests on the force increments (the seed's increment and
-  /// mixed criteria; the tangential ones skipped as above).
-  bool incrementsConverged(const ContactSettings& s) const {
-    if (normalIncrement > s.normalRelativeTolerance * contactForce + s.normalAbsoluteTolerance) return false;
-    if (tangentialForce <= s.tangentNormalRatio * contactForce) return true;
-    return stickIncrement <= s.stickRelativeTolerance * contactForce + s.stickAbsoluteTolerance &&
-           slipIncrement <= s.slipRelativeTolerance * contactForce + s.slipAbsoluteTolerance;
+  /// Every test of criteria() met.
+  bool criteriaMet(const ContactSettings& s) const {
+    for (const Criterion& c : criteria(s))
+      if (c.value > c.limit) return false;
+    return true;
   }
 };
 

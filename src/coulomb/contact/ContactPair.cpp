@@ -20,20 +20,9 @@ namespace {
 
 /// The slave faces as the automatic penalty sees them (diameter in the
 /// reference configuration, the Young's modulus of the element), the
-/// master's contact modulus and the thickness of the first slave face's
-/// block. The master modulus is the largest E of the blocks carrying master
-/// faces; a node's contact modulus is the softer side's, min(E_s,j, E_m)
-/// (AutomaticPenalty.hpp): a node's gap meets one element layer of each body
-/// in series, which the softer one governs (within a factor 2). The larger
-/// of the two instead (before) made a stiff die on a soft slab (E ratio 10)
-/// ten times stiffer in its gap rows than the slab under them: each
-/// iterate's gap error of a fraction of the slab's compliance opened most of
-/// a sliding zone (tests/zoo/sliding_cylinder_2d: 5.1 Newton iterations per
-/// slide increment against 3.1; the harmonic mean, twice as stiff here,
-/// 3.9). The ALM answer does not depend on it
-/// (tests/regression/penalty_independence.cmake); what does — a pure
-/// penalty's penetration, the regularised stick of a driven direction — is
-/// unchanged for like materials.
+/// master's contact modulus (the largest E of the blocks carrying master
+/// faces; AutomaticPenalty.hpp takes the softer side per node) and the
+/// thickness of the first slave face's block.
 struct PenaltyInput {
   std::vector<PenaltyFace> slaveFaces;
   double masterModulus = 0, thickness = 1;

@@ -6,21 +6,12 @@
 ///
 /// The system (docs/architecture.md, "Contact in the Newton system"):
 ///   F(u) = T (r(u) - f_c) + g,       J = T (K + K_c) + G,
-/// r, K the bulk residual and tangent, f_c the contact forces acting on the
-/// bodies, K_c = -d f_c / d u, and for ALM pairs
-///   T = I + (row recombination of CondensationFrame, and the master rows
-///       += M_jl n_j,c / (D_j |n_F|) × the a-row of slave node j),
-///   g, G  = the scaled weighted gap sign ε_n t g~_j and its derivative, in
-///           the gap slot of each active slave node,
-/// so that the multipliers never appear: T f_c = 0 identically for ALM (the
-/// condensation of the dual multipliers, D diagonal), and lambda_n is
-/// recovered from the slave rows of the bulk residual,
-///   lambda_n,j = a_j . r_{j,F} / (k t D_j |n_F|)   (equilibrium of the a-row).
-/// Penalty pairs: T = I, f_c = the penalty forces (formulation/Penalty.cpp).
-/// t is the 2D thickness (1 in 3D): contact forces scale like the bulk.
-///
-/// Prescribed DoFs keep their identity rows (nothing is added to them) and
-/// are left out as columns (the bulk tangent zeroes those columns too).
+/// r, K the bulk residual and tangent, f_c the contact forces on the bodies,
+/// K_c = -d f_c / d u; condensed pairs (ALM, MPC) replace the free rows of
+/// each active slave node (T - I) by its contact conditions and put the
+/// recovered force on the master rows (g, G), so the multipliers never
+/// appear; penalty pairs have T = I. Prescribed DoFs keep their identity
+/// rows and are left out as columns (the bulk tangent zeroes them too).
 #include <array>
 #include <cstdint>
 #include <memory>

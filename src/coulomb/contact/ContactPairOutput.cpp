@@ -13,27 +13,11 @@ namespace coulomb::contact {
 
 void ContactPair::reduceSummary(PairIterationSummary& summary) const {
   const auto& comm = *interface_->comm();
-  std::vector<double> values = {summary.normalResidual2, summary.contactForce2, summary.stickResidual2,
-                                summary.slipResidual2,   summary.normalIncrement2, summary.stickIncrement2,
-                                summary.slipIncrement2};
-  for (const auto* v : {&summary.slaveForce, &summary.normalForce, &summary.tangentialForce})
-    values.insert(values.end(), v->begin(), v->end());
-  values.push_back(summary.tangentialForce2);
-  std::vector<double> totals(values.size());
+  const auto sums = PairIterationSummary::sums(summary);
+  std::array<double, sums.size()> values{}, totals{};
+  for (std::size_t i = 0; i < sums.size(); ++i) values[i] = *sums[i];
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, static_cast<int>(values.size()), values.data(), totals.data());
-  summary.normalResidual2 = totals[0];
-  summary.contactForce2 = totals[1];
-  summary.stickResidual2 = totals[2];
-  summary.slipResidual2 = totals[3];
-  summary.normalIncrement2 = totals[4];
-  summary.stickIncrement2 = totals[5];
-  summary.slipIncrement2 = totals[6];
-  for (int c = 0; c < 3; ++c) {
-    summary.slaveForce[c] = totals[7 + c];
-    summary.normalForce[c] = totals[10 + c];
-    summary.tangentialForce[c] = totals[13 + c];
-  }
-  summary.tangentialForce2 = totals[16];
+  for (std::size_t i = 0; i < sums.size(); ++i) *sums[i] = totals[i];
   // The set's signature (ActiveSetCycle): the sum of its nodes' hashes.
   long long signature = 0;
   const auto& owned = interface_->ownedSlaveNodes();

@@ -12,9 +12,8 @@ namespace coulomb::contact {
 
 namespace {
 /// |D_j - int N_j| / int N_j below which a node's support counts as wholly on
-/// the master. Covered nodes of friction_patch_3d deviate by up to 6e-5 (the
-/// quadrature of the dual basis through a distorted bilinear map), 2D ones
-/// by 1e-16; a support partly off the master by 1e-2 to 1e-1 on both decks.
+/// the master: covered nodes deviate by up to 6e-5, partly covered ones by
+/// 1e-2 to 1e-1 (docs/architecture.md, "Coverage").
 constexpr double kCoverageTolerance = 1e-3;
 }  // namespace
 
@@ -25,26 +24,17 @@ bool ContactPair::coveredByMaster(const NodalMortarEntry& entry, const Interface
 
 std::array<double, 3> ContactPair::weightedSlip(const NodalMortarEntry& entry,
                                                 std::array<DerivativeRow, 3>* derivative) const {
-  // Objective (4.69b): w = (D - D^t) x_j - sum_l (M_jl - M^t_jl) x_l, taken
-  // in the translation-invariant form
-  //   w = sum_l (M_jl - M^t_jl) (x_j - x_l),
-  // which drops (ΔD - sum_l ΔM_jl) x_j. With the lumped D of the mortar
-  // kernels (D_j = sum_l M_jl segment by segment) that term is zero up to
-  // round-off, so the two forms are the same slip; the form leaves out the
-  // round-off's dependence on the origin (eps_mach |x_j| D, a slip that
-  // grows with the distance from the origin) and keeps (4.69b)'s
-  // objectivity: a rigid motion changes no M_jl and rotates x_j - x_l.
-  // (tests/unit/contact_friction_decks_mpi.cpp,
-  // FrictionFrameIndifference.ObjectiveSlipIsTranslationInvariant.)
-  // Non-objective (4.65a, seed sign): w = -[D (x_j - x^t_j) - sum_l M_jl (x_l - x^t_l)].
-  // Without operators of the last converged state (a node that had no
-  // master in reach) only the non-objective measure exists.
+  // Objective (4.69b): w = (D - D^t) x_j - sum_l (M_jl - M^t_jl) x_l, in the
+  // translation-invariant form w = sum_l (M_jl - M^t_jl) (x_j - x_l) (the
+  // same slip with the lumped D, D_j = sum_l M_jl; without the round-off
+  // that grows with the distance from the origin). Non-objective (4.65a,
+  // seed sign): w = -[D (x_j - x^t_j) - sum_l M_jl (x_l - x^t_l)], the only
+  // one for a node without operators at the step start.
+  // docs/architecture.md, "Frictional contact", has both and their tests.
   const NodalMortarEntry* previous = stepStartMortar_.find(entry.node);
   // And only where the node's support lies on the master now and at the
-  // step start: where part of it is off the master the overlap's moving
-  // edge enters sum_l ΔM_jl (x_j - x_l) as slip (an over-count measured on
-  // friction_patch_2d: 2.84e-3 at the node leaving the master against 1.95e-3
-  // at its neighbours), and the non-objective measure is the right one.
+  // step start: the moving edge of a partial overlap counts as slip in the
+  // objective form (docs/architecture.md, "Coverage").
   bool objective = settings_.slipMeasure == SlipMeasure::Objective && previous != nullptr &&
                    stepStartCovered_[static_cast<std::size_t>(previous - stepStartMortar_.entries.data())] &&
                    coveredByMaster(entry, x_);

@@ -204,9 +204,8 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
     s.slipThreshold = io::valueOrDefault<double>(p, v, "Slip Threshold");
     s.slipAugmentation = io::valueOrDefault<double>(p, v, "Slip Augmentation Coefficient");
     s.slipResetFrequency = io::valueOrDefault<int>(p, v, "Slip Reset Frequency");
-    // MPC judges a reset (stick) node on its reaction alone, which costs two
-    // Newton iterations per step in gross slip (friction punch: 95 against
-    // 61): MPC pairs never reset unless asked.
+    // MPC pairs never reset unless asked (docs/deck.md: a reset costs MPC
+    // two Newton iterations per step in gross slip).
     if (s.formulation == ContactFormulation::MPC && !p.isParameter("Slip Reset Frequency")) s.slipResetFrequency = 0;
     s.slipMeasure = kSlipMeasures.value(io::valueOrDefault<std::string>(p, v, "Slip Measure"));
     s.pureSlip = io::valueOrDefault<bool>(p, v, "Pure Slip");

@@ -41,8 +41,8 @@ enum class SlipMeasure { Objective, NonObjective };
 /// Condensed: the dual multipliers are eliminated (D diagonal), the Newton
 /// system is displacement-only (the production path). SaddlePoint: the
 /// multipliers are unknowns of their own (a vector per slave node, a Tpetra
-/// DoF block after the displacements), solved by the direct solver: a check
-/// of the condensation; ALM frictionless pairs only.
+/// DoF block after the displacements), solved by the direct solver: LMM
+/// pairs, and a check of the condensation with ALM frictionless pairs.
 enum class ContactSystemForm { Condensed, SaddlePoint };
 
 /// @brief One contact pair.
@@ -73,10 +73,7 @@ struct ContactPairSettings {
   double operatorThreshold = 0.0;
   /// The seed's FrictionalPureSlip: every active node is on the slip branch
   /// and carries the law's threshold against its weighted slip (never
-  /// sticks). With every mu zero the pair is frictionless anyway. For
-  /// contacts that slide everywhere (forming, ironing): a node that does not
-  /// slip has no direction (friction_punch's pressing with Pure Slip stalls
-  /// in its first increment, |r_slip| 19 after 25 iterations).
+  /// sticks): for contacts that slide everywhere (forming, ironing).
   bool pureSlip = false;
   /// The seed's ensure_contact: a converged step with no active slave node
   /// in this pair stops the run with an error (ContactModel::checkContact).

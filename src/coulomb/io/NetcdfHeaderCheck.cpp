@@ -27,16 +27,25 @@ public:
     count("the record count");
     list(kDimensionTag, "dimension", 8, [this] {
       name("dimension");
-      count("a dimension length");
+      lengths_.push_back(count("a dimension length"));
     });
     attributes("global");
     list(kVariableTag, "variable", 24, [this] {
-      const std::string what = name("variable");
-      const std::uint64_t ndims = count("the dimension count of variable '" + what + "'");
-      fits(ndims, countSize(), "variable '" + what + "' has " + std::to_string(ndims) + " dimensions");
-      for (std::uint64_t d = 0; d < ndims; ++d) count("a dimension id");
-      attributes("variable '" + what + "'");
-      word("a type");
+      const std::string what = "variable '" + name("variable") + "'";
+      const std::uint64_t ndims = count("the dimension count of " + what);
+      fits(ndims, countSize(), what + " has " + std::to_string(ndims) + " dimensions");
+      // netCDF sizes a variable by dividing by the product of its earlier
+      // dimensions: the record dimension (length 0) anywhere but first, or
+      // a type without a size, made it divide by zero (found by fuzz_exodus).
+      for (std::uint64_t d = 0; d < ndims; ++d) {
+        const std::uint64_t id = count("a dimension id");
+        if (id >= lengths_.size())
+          fail(what + " names dimension " + std::to_string(id) + " of " + std::to_string(lengths_.size()));
+        if (d > 0 && lengths_[id] == 0) fail(what + " has the record dimension in place " + std::to_string(d + 1));
+      }
+      attributes(what);
+      const std::uint64_t type = word("a type");
+      if (type == 0 || type > 11) fail(what + " has the unknown type " + std::to_string(type));
       count("a variable size");
       read(version_ == 1 ? 4 : 8, "a variable offset");
     });
@@ -107,6 +116,7 @@ private:
   std::uint64_t fileSize_;
   int version_;
   std::uint64_t position_ = 0;
+  std::vector<std::uint64_t> lengths_;  ///< of the dimensions read so far
 
 public:
   struct Incomplete {};  ///< the header goes on past the bytes given

@@ -1,7 +1,10 @@
 /// @file AlmFrictional.cpp
-/// @brief ALM and MPC with friction, condensed: the active and stick/slip
-/// sets (4.73-4.77) and the condensed rows of FrictionalNode.hpp, chained
-/// with the derivatives of the mortar quantities and of the weighted slip.
+/// @brief ALM and MPC, condensed, with friction or without: the active and
+/// stick/slip sets (4.73-4.77) and the condensed rows of FrictionalNode.hpp,
+/// chained with the derivatives of the mortar quantities and of the weighted
+/// slip. Frictionless pairs run the same kernel on its slip branch with a
+/// zero threshold (the seed's automatic pure slip): the tangent rows say
+/// b_s.r_F = 0, the multiplier has no tangential part, no slip is needed.
 /// docs/architecture.md, "Frictional contact", has the system. Contact
 /// forces on prescribed DoFs (slave nodes on a Dirichlet set, with the
 /// friction of their driven directions, and masters) are listed apart
@@ -19,10 +22,12 @@ namespace {
 template <int dim>
 class AlmFrictional final : public Formulation {
 public:
-  explicit AlmFrictional(const PairConstants& c) : c_(c), p_(pairFrictionalParameters(c)) {}
+  explicit AlmFrictional(const PairConstants& c)
+      : c_(c), p_(pairFrictionalParameters(c)), frictional_(c.settings->frictional()) {
+    if (!frictional_) p_.law = FrictionLaw{}, p_.pureSlip = true;
+  }
 
-  bool usesResidual() const override { return true; }
-  bool usesSlip() const override { return true; }
+  bool usesSlip() const override { return frictional_; }
 
   ContactState decide(const SlaveNode& n, ContactState previous, bool updateSet,
                       PairIterationSummary& summary) const override {
@@ -43,7 +48,6 @@ public:
     if (!isActive(n.state->state) || n.mortarDerivative == nullptr) return;
     const NodalMortarEntry& entry = *n.mortarDerivative;
     const NodalNormal& normal = *n.normalDerivative;
-    const auto& dw = *n.slipDerivative;
     const auto k = frictionalRows<dim>(input(n, entry, normal), n.state->state, parameters(n));
     if (!k.usable) return;
     for (int c = 0; c < dim; ++c) n.state->slipDirection[c] = k.direction[c];
@@ -69,7 +73,7 @@ public:
       for (int m = 0; m < dim; ++m) alongNormal[m] = d[dim + m];
       addNormalDerivative(row, normal, alongNormal);
       addScaled(row, entry.dD, d[3 * dim]);
-      for (int m = 0; m < dim; ++m) addScaled(row, dw[m], d[2 * dim + m]);
+      for (int m = 0; m < dim && frictional_; ++m) addScaled(row, (*n.slipDerivative)[m], d[2 * dim + m]);
       addScaled(row, entry.dGap, d[3 * dim + 1]);
       return row;
     };
@@ -146,15 +150,14 @@ private:
 
   PairConstants c_;
   FrictionalParameters p_;
+  bool frictional_;
 };
 
 }  // namespace
 
-template <int dim>
-std::unique_ptr<Formulation> makeAlmFrictional(const PairConstants& constants) {
-  return std::make_unique<AlmFrictional<dim>>(constants);
+std::unique_ptr<Formulation> makeAlmFrictional(int dim, const PairConstants& constants) {
+  if (dim == 2) return std::make_unique<AlmFrictional<2>>(constants);
+  return std::make_unique<AlmFrictional<3>>(constants);
 }
-template std::unique_ptr<Formulation> makeAlmFrictional<2>(const PairConstants&);
-template std::unique_ptr<Formulation> makeAlmFrictional<3>(const PairConstants&);
 
 }  // namespace coulomb::contact

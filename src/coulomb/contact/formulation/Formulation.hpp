@@ -36,8 +36,6 @@ struct PairConstants {
 class Formulation {
 public:
   virtual ~Formulation() = default;
-  /// The condensed forms read the bulk residual (the multiplier recovery).
-  virtual bool usesResidual() const { return false; }
   /// The saddle-point form: the nodes' multipliers are Newton unknowns
   /// (ContactPair::updateSaddlePoint gives them).
   virtual bool needsMultipliers() const { return false; }

@@ -3,10 +3,8 @@
 
 namespace coulomb::contact {
 
-namespace {
-
-template <int dim>
-std::unique_ptr<Formulation> make(const PairConstants& constants, ContactSystemForm form) {
+std::unique_ptr<Formulation> makeFormulation(int dim, const PairConstants& constants, ContactSystemForm form) {
+  COULOMB_CHECK(dim == 2 || dim == 3, "contact in dimension " << dim);
   const ContactPairSettings& s = *constants.settings;
   // The deck's check (parseContactSettings) keeps the saddle-point form to
   // LMM and ALM frictionless pairs, and LMM pairs to it. A frictionless ALM
@@ -17,18 +15,11 @@ std::unique_ptr<Formulation> make(const PairConstants& constants, ContactSystemF
     COULOMB_CHECK(s.formulation == ContactFormulation::LMM ||
                       (s.formulation == ContactFormulation::ALM && !s.frictional()),
                   "the saddle-point form is for LMM and ALM frictionless pairs");
-    return makeLagrangeNcp<dim>(constants);
+    return makeLagrangeNcp(dim, constants);
   }
   COULOMB_CHECK(s.formulation != ContactFormulation::LMM, "an LMM pair in the condensed form");
-  if (s.formulation == ContactFormulation::Penalty) return makePenalty<dim>(constants);
-  return s.frictional() ? makeAlmFrictional<dim>(constants) : makeAlmFrictionless<dim>(constants);
-}
-
-}  // namespace
-
-std::unique_ptr<Formulation> makeFormulation(int dim, const PairConstants& constants, ContactSystemForm form) {
-  COULOMB_CHECK(dim == 2 || dim == 3, "contact in dimension " << dim);
-  return dim == 2 ? make<2>(constants, form) : make<3>(constants, form);
+  if (s.formulation == ContactFormulation::Penalty) return makePenalty(dim, constants);
+  return makeAlmFrictional(dim, constants);
 }
 
 }  // namespace coulomb::contact

@@ -56,7 +56,8 @@ public:
   /// every node still carrying a multiplier.
   bool needsDerivatives(const SlaveNode& n) const override {
     if (!usable(n)) return false;
-    return isActive(n.state->state) || carriesMultiplier(n.multiplier);
+    // A nonzero multiplier still pushes on the bodies (its forces need D, M derivatives).
+    return isActive(n.state->state) || n.multiplier != std::array<double, 3>{};
   }
 
   void emit(const SlaveNode& n, RowSink& sink, PairIterationSummary& summary) const override {
@@ -64,7 +65,11 @@ public:
     const double t = c_.thickness;
     if (!usable(n)) {
       // No master in reach (or not usable): the multiplier vanishes, R = t c_n h^(dim-1) z.
-      addVanishingMultiplier(sink, n.slave, n.multiplier, dim, t * n.epsN * c_.referenceD);
+      const double scale = t * n.epsN * c_.referenceD;
+      for (int c = 0; c < dim; ++c) {
+        out.rows.push_back({sink.multiplierDof(n.slave, c), sink.multiplierDof(n.slave, c), scale});
+        out.residual.push_back({sink.multiplierDof(n.slave, c), scale * n.multiplier[c]});
+      }
       return;
     }
     const bool withDerivatives = n.mortarDerivative != nullptr;
@@ -100,13 +105,42 @@ public:
       summary.normalResidual2 += (t * D * normalRow) * (t * D * normalRow);
       (state == ContactState::Stick ? summary.stickResidual2 : summary.slipResidual2) += t * D * t * D * tangentRow2;
     }
-    std::array<double, 3> lambda{};
-    for (int c = 0; c < dim; ++c) lambda[c] = in.lambda[c];
-    addMultiplierForces(sink, n.slave, n.node, n.prescribed, entry, lambda, toLambda, c_.k * t, withDerivatives,
-                        isActive(state), normal.n, summary);
+    addForces(n, sink, entry, in, withDerivatives, summary);
   }
 
 private:
+  /// The forces of the node's multiplier on the bodies, slave k t D lambda,
+  /// master -k t M_jl lambda: the displacement rows carry -f_c, the columns
+  /// C = -df/dz, and K_c = -df/du through D and M (`withDerivatives`); the
+  /// force counts in the summary when the node is active.
+  void addForces(const SlaveNode& n, RowSink& sink, const NodalMortarEntry& entry, const NcpNodeInput<dim>& in,
+                 bool withDerivatives, PairIterationSummary& summary) const {
+    const double kt = c_.k * c_.thickness, toLambda = n.epsN / c_.k, D = entry.D;
+    auto& out = sink.out;
+    std::array<double, dim> force{}, normalPart{};
+    double fn = 0;
+    for (int c = 0; c < dim; ++c) fn += kt * D * in.lambda[c] * in.normal[c];
+    for (int c = 0; c < dim; ++c) {
+      force[c] = kt * D * in.lambda[c];
+      normalPart[c] = fn * in.normal[c];
+      const GlobalOrdinal z = sink.multiplierDof(n.slave, c);
+      if (!n.prescribed[c]) {
+        const GlobalOrdinal row = sink.row(n.node, c);
+        out.contactResidual.push_back({row, -force[c]});
+        out.multipliers.columns.push_back({row, z, -kt * D * toLambda});
+        if (withDerivatives) sink.add(out.contactStiffness, row, entry.dD, -kt * in.lambda[c]);
+      }
+      for (const auto& [master, Mjl] : entry.M) {
+        if (sink.prescribed(master, c)) continue;
+        const GlobalOrdinal row = sink.row(master, c);
+        out.contactResidual.push_back({row, kt * Mjl * in.lambda[c]});
+        out.multipliers.columns.push_back({row, z, kt * Mjl * toLambda});
+        const auto dM = entry.dM.find(master);
+        if (withDerivatives && dM != entry.dM.end()) sink.add(out.contactStiffness, row, dM->second, kt * in.lambda[c]);
+      }
+    }
+    if (isActive(n.state->state)) summary.addSlaveForce(force, normalPart);
+  }
   bool usable(const SlaveNode& n) const {
     return n.mortar != nullptr && condensationFrame<dim>(first<dim>(n.normal->n), first<dim>(n.prescribed)).usable;
   }
@@ -138,11 +172,9 @@ private:
 
 }  // namespace
 
-template <int dim>
-std::unique_ptr<Formulation> makeLagrangeNcp(const PairConstants& constants) {
-  return std::make_unique<LagrangeNcp<dim>>(constants);
+std::unique_ptr<Formulation> makeLagrangeNcp(int dim, const PairConstants& constants) {
+  if (dim == 2) return std::make_unique<LagrangeNcp<2>>(constants);
+  return std::make_unique<LagrangeNcp<3>>(constants);
 }
-template std::unique_ptr<Formulation> makeLagrangeNcp<2>(const PairConstants&);
-template std::unique_ptr<Formulation> makeLagrangeNcp<3>(const PairConstants&);
 
 }  // namespace coulomb::contact

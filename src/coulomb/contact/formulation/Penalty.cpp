@@ -110,11 +110,9 @@ private:
 
 }  // namespace
 
-template <int dim>
-std::unique_ptr<Formulation> makePenalty(const PairConstants& constants) {
-  return std::make_unique<Penalty<dim>>(constants);
+std::unique_ptr<Formulation> makePenalty(int dim, const PairConstants& constants) {
+  if (dim == 2) return std::make_unique<Penalty<2>>(constants);
+  return std::make_unique<Penalty<3>>(constants);
 }
-template std::unique_ptr<Formulation> makePenalty<2>(const PairConstants&);
-template std::unique_ptr<Formulation> makePenalty<3>(const PairConstants&);
 
 }  // namespace coulomb::contact

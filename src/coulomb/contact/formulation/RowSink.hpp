@@ -48,24 +48,6 @@ private:
   GlobalOrdinal multiplierOffset_;
 };
 
-/// The forms with the multipliers as unknowns (LagrangeNcp):
-/// the forces of slave node `slave` (global `node`, Dirichlet components
-/// `prescribed`) on the bodies, slave k t D lambda, master -k t M_jl lambda,
-/// with lambda = (z / toUnknown) the node's multiplier: the displacement
-/// rows carry -f_c, the columns C = -df/dz, and K_c = -df/du through D and M
-/// when `withDerivatives` (entry then has them). The force counts in
-/// `summary` when `active`.
-/// The same forms at a node without a usable master: the multiplier
-/// vanishes, the rows R = scale z on the node's `dim` multiplier DoFs.
-void addVanishingMultiplier(RowSink& sink, int slave, const std::array<double, 3>& z, int dim, double scale);
-/// A nonzero multiplier still pushes on the bodies (its forces need D, M derivatives).
-inline bool carriesMultiplier(const std::array<double, 3>& z) { return z[0] != 0.0 || z[1] != 0.0 || z[2] != 0.0; }
-
-void addMultiplierForces(RowSink& sink, int slave, long long node, const std::array<bool, 3>& prescribed,
-                         const NodalMortarEntry& entry, const std::array<double, 3>& lambda, double toLambda, double kt,
-                         bool withDerivatives, bool active, const std::array<double, 3>& normal,
-                         PairIterationSummary& summary);
-
 /// to += scale × from.
 inline void addScaled(DerivativeRow& to, const DerivativeRow& from, double scale) {
   if (scale == 0.0) return;

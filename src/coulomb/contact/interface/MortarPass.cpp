@@ -19,7 +19,6 @@
 
 #include <Teuchos_CommHelpers.hpp>
 #include <algorithm>
-#include <ostream>
 
 #include "coulomb/contact/mortar/MortarSegment2D.hpp"
 #include "coulomb/contact/mortar/MortarSegment3D.hpp"
@@ -48,44 +47,10 @@ void NodalMortarEntry::add(const NodalMortarEntry& other) {
   for (const auto& [l, row] : other.dM) addRow(dM[l], row);
 }
 
-bool NodalMortarEntry::operator==(const NodalMortarEntry& o) const {
-  return node == o.node && D == o.D && gap == o.gap && M == o.M && dD == o.dD && dGap == o.dGap && dM == o.dM;
-}
-
 const NodalMortarEntry* NodalMortarQuantities::find(long long node) const {
   const auto it = std::lower_bound(entries.begin(), entries.end(), node,
                                    [](const NodalMortarEntry& e, long long n) { return e.node < n; });
   return it != entries.end() && it->node == node ? &*it : nullptr;
-}
-
-namespace {
-
-void printRow(std::ostream& out, const char* name, const DerivativeRow& row) {
-  out << "    " << name << ":";
-  for (const auto& [key, value] : row) out << " (" << key.first << "," << key.second << ")=" << value;
-  out << "\n";
-}
-
-}  // namespace
-
-std::ostream& operator<<(std::ostream& out, const NodalMortarEntry& e) {
-  out << "  node " << e.node << ": D = " << e.D << ", gap = " << e.gap << ", M =";
-  for (const auto& [l, value] : e.M) out << " [" << l << "]=" << value;
-  out << "\n";
-  if (!e.dD.empty()) printRow(out, "dD", e.dD);
-  if (!e.dGap.empty()) printRow(out, "dGap", e.dGap);
-  for (const auto& [l, row] : e.dM) {
-    const std::string name = "dM[" + std::to_string(l) + "]";
-    printRow(out, name.c_str(), row);
-  }
-  return out;
-}
-
-std::ostream& operator<<(std::ostream& out, const NodalMortarQuantities& q) {
-  out << "NodalMortarQuantities (" << q.dimension << "D, " << q.entries.size() << " slave nodes"
-      << (q.withDerivatives ? ", with derivatives" : "") << ")\n";
-  for (const auto& e : q.entries) out << e;
-  return out;
 }
 
 // --------------------------------------------------------------------- pass

@@ -28,7 +28,6 @@
 /// (Mesh::nodeOwner, ContactInterface::ownedSlaveNodes()). See MortarPass.cpp for
 /// the communication (one MPI_Alltoall of counts + one MPI_Alltoallv of packed
 /// doubles).
-#include <iosfwd>
 #include <map>
 #include <utility>
 #include <vector>
@@ -55,8 +54,6 @@ struct NodalMortarEntry {
   std::map<long long, DerivativeRow> dM;      ///< d M_jl / d x by master node l
   /// Adds another contribution to the same node (values and derivatives).
   void add(const NodalMortarEntry& other);
-  bool operator==(const NodalMortarEntry& other) const;
-  bool operator!=(const NodalMortarEntry& other) const { return !(*this == other); }
 };
 
 /// @brief Nodal mortar quantities: one entry per slave node (sorted by node).
@@ -66,15 +63,7 @@ struct NodalMortarQuantities {
   std::vector<NodalMortarEntry> entries;  ///< increasing node numbers, no duplicates
   /// The entry of a global node, or nullptr.
   const NodalMortarEntry* find(long long node) const;
-  bool operator==(const NodalMortarQuantities& other) const {
-    return dimension == other.dimension && withDerivatives == other.withDerivatives && entries == other.entries;
-  }
-  bool operator!=(const NodalMortarQuantities& other) const { return !(*this == other); }
 };
-
-/// Prints every entry (values, then the derivative rows) for diagnostics.
-std::ostream& operator<<(std::ostream& out, const NodalMortarEntry& entry);
-std::ostream& operator<<(std::ostream& out, const NodalMortarQuantities& quantities);
 
 /// @brief Integrates every (slave face, candidate) pair of `pairs` and accumulates
 /// the nodal quantities of the slave nodes of these faces. Not collective.
@@ -85,14 +74,8 @@ std::ostream& operator<<(std::ostream& out, const NodalMortarQuantities& quantit
 /// of a slave face that has at least one contributing pair (partial sums: the
 /// contributions of this rank's faces only).
 /// `relativeTolerance`: passed to the segment kernels (merge, on-edge band
-/// and area tolerances, relative to the face). 1e-12: the objective slip
-/// multiplies a change of M_jl by a length, so a jump of M at the
-/// tolerance shows in the stick rows as eps_n t × tolerance × h. At 1e-10
-/// friction_r2 (scripts/bench friction --ref 2) stalled at t = 2 with three
-/// nodes' weighted slips flipping sign (±2.4e-13, D 1.6e-2) at every iterate,
-/// |f| 5.2e-7 against a target ~3e-7, through 5 cutbacks; at 1e-12 it
-/// converges quadratically (|f| 1.3e-11 in 2 iterations). The non-objective
-/// slip (dM times an increment) never saw the jump.
+/// and area tolerances, relative to the face); 1e-12 because the objective
+/// slip sees a jump of M_jl at the tolerance (docs/architecture.md, "Coverage").
 NodalMortarQuantities integrateMortarPass(const ContactInterface& contact, const InterfaceConfiguration& x,
                                           const std::vector<NodalNormal>& normals, const SearchResult& pairs,
                                           bool withDerivatives, double relativeTolerance = 1e-12);

@@ -22,23 +22,9 @@ const char* toString(ContactState state) {
 
 std::ostream& operator<<(std::ostream& out, ContactState state) { return out << toString(state); }
 
-double augmentedNormalMultiplier(double lambdaN, double weightedGap, double D, double k, double epsN) {
-  COULOMB_CHECK(D > 0.0, "contact: nodal mortar weight D_j must be > 0, got " << D);
-  return k * lambdaN + epsN * weightedGap / D;
-}
-
 ContactState almContactState(double lambdaN, double weightedGap, double D, double k, double epsN, double touching) {
-  return augmentedNormalMultiplier(lambdaN, weightedGap, D, k, epsN) <= epsN * touching ? ContactState::Slip
-                                                                                       : ContactState::Inactive;
-}
-
-ContactState mpcContactState(bool wasActive, double lambdaN, double weightedGap) {
-  const double decisive = wasActive ? lambdaN : weightedGap;
-  return decisive <= 0.0 ? ContactState::Slip : ContactState::Inactive;
-}
-
-ContactState penaltyContactState(double weightedGap) {
-  return weightedGap <= 0.0 ? ContactState::Slip : ContactState::Inactive;
+  COULOMB_CHECK(D > 0.0, "contact: nodal mortar weight D_j must be > 0, got " << D);
+  return k * lambdaN + epsN * weightedGap / D <= epsN * touching ? ContactState::Slip : ContactState::Inactive;
 }
 
 ContactState stickSlipState(double tangentNorm, double threshold, ContactState previous, double slipThreshold) {
@@ -68,24 +54,6 @@ void countState(ActiveSetSummary& summary, ContactState state, ContactState prev
   if (state == ContactState::Stick) ++summary.stick;
   if (isActive(state) != isActive(previous)) ++summary.changed;
   else if (state != previous) ++summary.stickSlipChanged;
-}
-
-std::ostream& operator<<(std::ostream& out, const ActiveSetSummary& summary) {
-  out << "nodes " << summary.nodes << ": active " << summary.active << ", inactive " << summary.inactive
-      << ", changed " << summary.changed;
-  if (summary.stick > 0 || summary.stickSlipChanged > 0)
-    out << ", stick " << summary.stick << ", stick/slip changed " << summary.stickSlipChanged;
-  return out;
-}
-
-ActiveSetSummary summarizeActiveSet(const std::vector<ContactState>& current,
-                                    const std::vector<ContactState>& previous) {
-  COULOMB_CHECK(previous.empty() || previous.size() == current.size(),
-                  "contact: active set sizes differ (" << current.size() << " nodes now, " << previous.size()
-                                                       << " before)");
-  ActiveSetSummary s;
-  for (std::size_t i = 0; i < current.size(); ++i) countState(s, current[i], previous.empty() ? current[i] : previous[i]);
-  return s;
 }
 
 }  // namespace coulomb::contact

@@ -56,11 +56,9 @@ inline bool isActive(ContactState state) { return state != ContactState::Inactiv
 const char* toString(ContactState state);
 std::ostream& operator<<(std::ostream& out, ContactState state);
 
-/// @brief Augmented normal multiplier lambdā_n = k lambda_n + eps_n g~ / D (seed 4.59, 4.74).
-/// Requires D > 0.
-double augmentedNormalMultiplier(double lambdaN, double weightedGap, double D, double k, double epsN);
-
-/// @brief ALM update rule (4.73/4.74): Active iff lambdā_n <= eps_n × `touching`.
+/// @brief ALM update rule (4.73/4.74): Active iff the augmented normal
+/// multiplier lambdā_n = k lambda_n + eps_n g~ / D (seed 4.59; D > 0) is at
+/// most eps_n × `touching`.
 /// `touching` (a length, default 0) counts surfaces that touch to within it
 /// as closed: surfaces that touch in the mesh have weighted gaps of ±1e-17,
 /// whose sign the last bits of the coordinates decide (and with it the
@@ -68,16 +66,6 @@ double augmentedNormalMultiplier(double lambdaN, double weightedGap, double D, d
 /// carries at most eps_n × touching of tension.
 ContactState almContactState(double lambdaN, double weightedGap, double D, double k, double epsN,
                              double touching = 0.0);
-
-/// @brief MPC update rule (no penalty, no augmentation): a tied node stays
-/// tied while its reaction is compressive (lambda_n <= 0, recovered from the
-/// constraint force), an untied node is tied when it touches or penetrates
-/// (g~ <= 0). The same as almContactState at converged states (an active
-/// node has g~ = 0, an inactive one lambda_n = 0); different on the way.
-ContactState mpcContactState(bool wasActive, double lambdaN, double weightedGap);
-
-/// @brief Penalty update rule (4.74): Active iff g~ <= 0 (threshold eps_n g~).
-ContactState penaltyContactState(double weightedGap);
 
 /// @brief Stick/slip update rule of an active node (seed 4.75-4.77) with the
 /// slip hysteresis: `tangentNorm` = |augmented tangential multiplier|
@@ -107,11 +95,6 @@ struct ActiveSetSummary {
   std::size_t stickSlipChanged = 0;  ///< active nodes that changed between stick and slip
   /// Converged active and stick/slip sets (Algorithm 3, line 19): no node changed.
   bool unchanged() const { return changed == 0 && stickSlipChanged == 0; }
-  bool operator==(const ActiveSetSummary& other) const {
-    return nodes == other.nodes && active == other.active && inactive == other.inactive && stick == other.stick &&
-           changed == other.changed && stickSlipChanged == other.stickSlipChanged;
-  }
-  bool operator!=(const ActiveSetSummary& other) const { return !(*this == other); }
   /// Adds the counts of another part (e.g. another rank's nodes).
   ActiveSetSummary& operator+=(const ActiveSetSummary& other);
 };
@@ -127,14 +110,5 @@ inline ContactState nextState(ContactState rule, ContactState previous, bool upd
   if (rule != previous) ++violations;
   return previous;
 }
-
-/// "nodes 10: active 4, inactive 6, changed 1"
-std::ostream& operator<<(std::ostream& out, const ActiveSetSummary& summary);
-
-/// @brief Summary of `current` against `previous` (same node order). An empty
-/// `previous` counts every node as unchanged; otherwise the sizes must match
-/// (throws coulomb::InternalError).
-ActiveSetSummary summarizeActiveSet(const std::vector<ContactState>& current,
-                                    const std::vector<ContactState>& previous);
 
 }  // namespace coulomb::contact

@@ -8,19 +8,12 @@
 /// modulus. h_j depends on the formulation (PenaltySize):
 ///  - Penalty: the node's own faces. eps_n is then part of the answer (the
 ///    penetration p / eps_n), which should be the same fraction p / E of the
-///    local element everywhere; with one mean h a graded slave mesh sank a
-///    factor 13 deeper per face at its fine end than at its coarse one
-///    (ContactPairs.AutomaticPenaltyFollowsTheLocalFaceSize).
-///  - ALM and MPC: the pair's mean face size, as the seed's default. Here
-///    eps_n only weighs the gap against the multiplier in the active-set
-///    test and scales the gap rows; the converged answer does not depend on
-///    it (tests/regression/penalty_independence.cmake). Measured with the
-///    local size (tests/performance/README.md): every zoo case and benchmark
-///    the same or one iteration better, but sliding_cylinder_2d, whose slab
-///    is refined along the track (faces 0.125 against a mean of 0.21),
-///    169 Newton iterations against 141 — the stiffer gap rows let each
-///    extrapolated predictor open and close edge nodes on its gap error
-///    (the first iterate's residual 60 against 2.2).
+///    local element everywhere (ContactPairs.AutomaticPenaltyFollowsTheLocalFaceSize).
+///  - ALM and MPC: the pair's mean face size, as the seed's default: eps_n
+///    only weighs the gap in the active-set test and scales the gap rows, the
+///    answer does not depend on it (tests/regression/penalty_independence.cmake),
+///    and the local size cost iterations on a slab refined along the track
+///    (docs/architecture.md, "Automatic penalty per node", has the figures).
 /// A pure kernel on plain data (no MPI, no mesh): ContactPair fills the faces.
 
 #include <array>

@@ -225,7 +225,12 @@ NodeTerms<dim, S> nodeTerms(const std::array<S, dim>& r, const std::array<S, dim
       for (int k = 0; k < terms.numDriven; ++k) terms.lambdaN -= terms.tau[k] * aU[k] / p.k;
   }
   for (int c = 0; c < dim; ++c) terms.lambda[c] = terms.lambdaN * n[c];
-  for (int i = 0; i < f.numFree; ++i) {
+  // Without a friction law the multiplier has no tangential part: the
+  // tangent rows (b_s.r_F = 0) say that the bulk carries none, and until
+  // they hold the master is not pushed by the slave's tangential residual
+  // (with it: friction_r2 frictionless 31 Newton iterations against 30,
+  // one_element_bodies_3d 3 against 2).
+  for (int i = 0; i < f.numFree && p.law.type != FrictionLawType::None; ++i) {
     const int s = f.free[i];
     if (s == f.gapSlot) continue;
     for (int c = 0; c < dim; ++c) terms.lambda[c] += terms.beta[s] * f.b[s][c];
@@ -238,37 +243,13 @@ NodeTerms<dim, S> nodeTerms(const std::array<S, dim>& r, const std::array<S, dim
 
 /// A slipping node whose iterate slid against the direction `previous` its
 /// slip rows gave it (w.d < 0) far enough that the rule (4.75-4.77) would
-/// reverse it (lambdā_tau.d < 0, `directionO/U` the unit lambdā_tau).
-///
-/// Why it is set to stick instead (the slip -> stick side of (4.75), beside
-/// the hysteresis of stickSlipState): its slip rows gave it the traction
-/// k beta = Θ d, and at a slip solution w is along d with a positive factor
-/// (4.79), so lambdā_tau = k beta + alpha eps_tau w / D points along d. This
-/// iterate slid against the friction force it carried, by more than
-/// |k beta| D / (alpha eps_tau): Θ d was more than the node needed. The rule
-/// alone reads |lambdā_tau| > (1 - slip threshold) Θ as "slip along -d" and
-/// gives it -Θ d, to which the node answers by sliding the other way: d
-/// flips at every iterate, the sets and the increment norm unchanged
-/// (tests/zoo/sharp_punch_2d and the pressing of sliding_cylinder_2d:
-/// |r_slip| alternating between two values until the step fails). The
-/// traction that holds it lies between +Θ d and -Θ d: stick (the stick guess
-/// of Algorithm 3 again), from where the stick test with the full
-/// augmentation (4.77) sends it to slip along its needed traction if the cone
-/// cannot hold it. In 2D the tangent is a line and d can only flip; in 3D
-/// this is a turn by more than 90 degrees in one iterate. (The flip itself
-/// was no state change for the convergence test; slip -> stick is one.)
-///
-/// The same holds short of a reversal (ε-independence): an iterate that slid
-/// against d by less than that keeps |lambdā_tau| = Θ - alpha eps_tau |w.d| / D
-/// along d, which the hysteresis (> (1 - slip threshold) Θ) reads as slip. The
-/// slip rows are then solved with w ∥ -d: a converged state whose friction
-/// force pushes the node along its slip (negative dissipation), reachable for
-/// slips up to slip threshold × Θ D / (alpha eps_tau), so a smaller penalty
-/// admitted a larger one (friction_punch with Penalty Factor 0.01: 4 of 15
-/// nodes, 3 % in displacement; tests/regression). A slip against d that takes
-/// more than kAgainst Θ off lambdā_tau is a stick node too; kAgainst lies far
-/// above the round-off of w (a node in stick at the cone edge) and far below
-/// the hysteresis.
+/// reverse it (lambdā_tau.d < 0, `directionO/U` the unit lambdā_tau), or
+/// that took more than kAgainst Θ off lambdā_tau along d: it sticks instead
+/// (the traction that holds it lies between +Θ d and -Θ d). Without this, d
+/// flipped at every iterate (a stick/slip 2-cycle), or the slip rows
+/// converged with the friction force along the slip (negative dissipation);
+/// docs/architecture.md, "Slip reversal → stick", has the cases and figures.
+/// kAgainst lies far above the round-off of w and far below the hysteresis.
 template <int dim>
 bool slipReversed(const NodeTerms<dim, double>& t, const std::array<double, dim>& directionO,
                   const std::array<double, dim>& directionU, const FrictionalNodeInput<dim>& in, double threshold,
@@ -319,15 +300,10 @@ FrictionalNodeState<dim> frictionalState(const FrictionalNodeInput<dim>& in, Con
   for (int c = 0; c < dim; ++c) out.augmentedTangent[c] = out.tangentNorm * direction[c];
   // A node that closes (first time in the step, or again) has no recovered
   // traction: it is judged on its augmented values (lambda = 0) from the
-  // stick side, |eps_tau w / D| against Θ(eps_n g~ / D): the node at the
-  // leading edge of a die in gross slip was passed over by the master by a
-  // fraction of the step's slide before it closed, and a stick guess
-  // (Algorithm 3, line 6) ties it back by that slip: the next iterate opens
-  // most of the zone (tests/zoo/sliding_cylinder_2d: 7.7 Newton iterations per
-  // slide increment with the stick guess, 5.1 without). A slip at the
-  // round-off of the coordinates (|w| / D <= roundOffSlip, like materials
-  // pressed symmetrically) is no slip: the decision must not depend on the
-  // last bits, which differ with the rank count.
+  // stick side, |eps_tau w / D| against Θ(eps_n g~ / D), not forced to
+  // stick (Algorithm 3, line 6; docs/architecture.md, "Sets", has why). A
+  // slip at the round-off of the coordinates (|w| / D <= roundOffSlip) is no
+  // slip: the decision must not depend on bits that differ with the rank count.
   if (isActive(previous)) {
     out.state = stickSlipState(out.tangentNorm, out.threshold, previous, p.slipThreshold);
     // A direction fixed for the step (the last step's slip, slipDirectionFromSlip)

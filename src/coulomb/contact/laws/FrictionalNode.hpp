@@ -4,45 +4,25 @@
 /// (ALM, vector multiplier condensed out; seed 4.62, 4.72b, 4.75-4.77, 4.79)
 /// and its stick/slip decision. Fixed-size arrays, no Tpetra, no MPI.
 ///
-/// Condensation (docs/architecture.md, "Frictional contact"): with the dual
-/// basis D is diagonal, so the slave node's free displacement rows determine
-/// its multiplier from the bulk residual r (f_int - f_ext, no contact force):
-///   k t D lambda_F = r_F,
-/// in the frame of CondensationFrame (a = n_F/|n_F|, tangents b_s):
+/// The formulas (docs/architecture.md, "Contact in the Newton system" and
+/// "Frictional contact"): the multiplier recovered from the bulk residual r
+/// in the frame of CondensationFrame (a = n_F/|n_F|, tangents b_s),
 ///   lambda_n = a.r_F / (k t D |n_F|),   beta_s = b_s.r_F / (k t D),
-///   lambda   = lambda_n n + sum_s beta_s b_s.
-/// The node's free rows are then replaced by its contact conditions:
-///   gap slot        : sign eps_n t g~                       (as frictionless)
-///   tangent slot s  : stick  eps_n t (b_s . w)              (no slip, 4.72b st)
-///                     slip   b_s.r_F - t D Θ d_s            (traction on the cone, 4.72b sl)
-/// with w the weighted slip increment (seed sign of 4.69b: the motion of the
-/// master relative to the slave, D × length), Θ the friction law's
-/// threshold at lambdā_n = k lambda_n + eps_n g~ / D, and d the unit
-/// direction of the augmented tangential multiplier
-///   lambdā_tau = k beta + alpha eps_tau (b.w) / D      (alpha: slip augmentation),
-/// so that at a slip solution k beta = Θ d and w ∥ d with a positive factor:
-/// the traction on the slave drags it along with the master, i.e. opposes
-/// its slip (the semi-smooth Newton form of the NCP 4.79). alpha > 0 makes
-/// the slip direction a Newton unknown in 3D (alpha = 0 leaves it free).
-/// The stick rows use the gap rows' scale eps_n t, not eps_tau: they are
-/// conditions w = 0 whose scale only affects the conditioning; eps_tau
-/// (= kappa eps_n) enters the stick/slip decision and the slip direction.
+///   lambda   = lambda_n n + sum_s beta_s b_s   (no beta without a law),
+/// and the node's free rows replaced by
+///   gap slot        : sign eps_n t g~
+///   tangent slot s  : stick  eps_n t (b_s . w)       (no slip, 4.72b st)
+///                     slip   b_s.r_F - t D Θ d_s     (traction on the cone, 4.72b sl)
+/// with w the weighted slip (seed sign of 4.69b: the master relative to the
+/// slave), Θ the law's threshold at lambdā_n = k lambda_n + eps_n g~ / D,
+/// and d the unit direction of lambdā_tau = k beta + alpha eps_tau (b.w) / D,
+/// so that at a slip solution k beta = Θ d and w ∥ d (the semi-smooth Newton
+/// form of the NCP 4.79). A frictionless law is the slip branch with Θ = 0.
+/// Driven directions (a tangential component prescribed, the slave moved
+/// relative to the master) cannot be condensed: their traction is explicit,
+/// the penalty return map (4.71a) on the step's history, its force on the
+/// support and the master (docs/architecture.md, "Driven directions").
 /// The master rows receive the recovered force k t M_jl lambda (the caller).
-///
-/// Driven directions (a slave node whose tangential DoF is prescribed, e.g.
-/// the corner of a pushed block that is also a slave node): the tangent
-/// directions u_k that no free row of the node sees (⟂ n and the b_s, from the
-/// driven components) cannot be condensed, since their multiplier would need
-/// a row of its own. Their traction tau_k is explicit, the return map of the
-/// penalty form (4.71a, the seed's ComputePenaltyFrictionalActiveSet) on the
-/// history of the step: trial tau*_k = u_k.t_old + eps_tau u_k.w / D (t_old the
-/// converged traction of the last step); stick tau = tau*, slip tau = Θ d_k
-/// with the node's one slip direction d over the b_s and u_k, and the cone
-/// test on |(lambdā_tau on the b_s, tau*)|. In gross slip this is exactly
-/// Θ d, the Coulomb traction; in stick it is the regularised stick of a
-/// penalty (the slip of the node stays ~ its traction / eps_tau). The force
-/// k t D tau u acts on the prescribed DoF (the support carries it:
-/// ContactModel::subtractPrescribedForces) and -k t M_jl tau u on the master.
 ///
 /// Inputs of the derivatives, in this order: r (dim), n (dim), w (dim), D, g~.
 #include <array>

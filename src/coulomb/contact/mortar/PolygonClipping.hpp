@@ -60,24 +60,11 @@ template <typename T>
 void makeCounterClockwise(Polygon2<T>& polygon);
 
 /// @brief Width of the band outside a clip edge in which a vertex counts as on
-/// the edge, in units of the merge tolerance (the 3D kernels: 1e-12 of the
-/// face since 2026-12-02, 1e-10 before; MortarPass.hpp says why). Two
-/// failures bounded it at 1e-10:
-///  - on matching meshes slave and master edges coincide and Newton iterates
-///    scatter about that configuration by ~1.5e-10 of the face. With the band
-///    at 1 tolerance the scatter crossed the band's outer edge, where the
-///    polygon jumps from "the vertex" to "the intersections": the objective
-///    slip (dM times the coordinates) cycled at 1e-9 of the contact force and
-///    the 3D stick patch on a matching mesh failed;
-///  - that jump grows with the band: at 100 tolerances (1e-8 of the face) a
-///    sliding sphere (ironing on hertz3d_r1) met it above the Newton
-///    tolerance and failed after 5 cutbacks.
-/// At 10 (1e-9 of the face) both run (ctest: the matching patches and
-/// Bench.ironing_r1). Widening the merge and area tolerances as well broke the
-/// finite-difference checks of the contact tangent on distorted meshes.
-/// (Since 2026-12-02 a vertex in the band is put onto the edge's line, so
-/// that the jump at the band's edge is O(band²), and vertices near a clip
-/// edge are snapped onto it first, kSnapRelative.)
+/// the edge, in units of the merge tolerance: 10 (1e-9 of the face) lies
+/// outside the scatter of Newton iterates about coincident edges of
+/// matching meshes (at 1, the 3D stick patch cycled) and below the jump at
+/// the band's outer edge that a sliding sphere met at 100 (docs/architecture.md,
+/// "Matching meshes" and "Nearly coincident boundaries").
 constexpr double kOnEdgeFactor = 10.0;
 
 /// @brief Width of the zone about a clip edge in which subject vertices are
