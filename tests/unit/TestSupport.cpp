@@ -1,5 +1,6 @@
 #include "TestSupport.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -124,6 +125,20 @@ void forOwnedNodes(const solver::Simulation& simulation,
     const long long node = mesh.localNodes()[i];
     f(node, &mesh.global().coordinates[node * dim], &u[i * dim]);
   }
+}
+
+LinearFieldError linearFieldError(const solver::Simulation& simulation, const double (&A)[3][3], const double (&b)[3]) {
+  const int dim = simulation.mesh().dimension();
+  LinearFieldError out;
+  forOwnedNodes(simulation, [&](long long, const double* X, const double* u) {
+    for (int i = 0; i < dim; ++i) {
+      double exact = b[i];
+      for (int j = 0; j < dim; ++j) exact += A[i][j] * X[j];
+      out.error = std::max(out.error, std::abs(u[i] - exact));
+      out.value = std::max(out.value, std::abs(exact));
+    }
+  });
+  return {globalMax(out.error), globalMax(out.value)};
 }
 
 double globalMax(double local) {

@@ -36,6 +36,13 @@ std::string dirichletXml(const std::string& name, const std::string& nodeSet, co
 /// Calls f(globalNode, X, u) for every owned node of a finished simulation.
 void forOwnedNodes(const solver::Simulation& simulation,
                    const std::function<void(long long, const double*, const double*)>& f);
+/// The largest nodal error of a finished simulation against the linear
+/// field u_i = b_i + A_ij X_j, and the largest |u_i| of that field, over all
+/// ranks: the patch tests' measure.
+struct LinearFieldError {
+  double error = 0, value = 0;
+};
+LinearFieldError linearFieldError(const solver::Simulation& simulation, const double (&A)[3][3], const double (&b)[3]);
 /// Max over ranks.
 double globalMax(double local);
 double globalSum(double local);
