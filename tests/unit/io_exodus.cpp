@@ -433,6 +433,15 @@ TEST(ExodusIo, ElementTypeNames) {
 // exodusII library sizes its buffer from (a dimension renamed to a duplicate
 // name, found by tests/fuzz/fuzz_exodus: a heap overflow inside the library
 // and a double free) is refused before the library reads the variable.
+// A damaged maximum name length (found by fuzz_exodus: 2.7e8 characters in
+// a 6 kB file) is refused before it sizes a name buffer per block and set
+// (1.3 GB for 5 sets, an out-of-memory).
+TEST(ExodusIo, AbsurdNameLengthIsRefusedBeforeAllocating) {
+  const std::string path = std::string(COULOMB_SOURCE_DIR) + "/tests/fuzz/regressions/exodus/name_length_huge.e";
+  expectErrorContaining([&] { coulomb::io::readExodus(path); },
+                        {path, "the header declares names of", "characters (at most 256)", "the file is damaged"});
+}
+
 TEST(ExodusIo, VariableLongerThanItsDimensionIsRefusedBeforeReading) {
   const std::string path = std::string(COULOMB_SOURCE_DIR) + "/tests/fuzz/regressions/exodus/side_set_dimension_renamed.e";
   expectErrorContaining([&] { coulomb::io::readExodus(path); }, {path, "netCDF variable", "the file is damaged"});

@@ -140,6 +140,7 @@ NodalNormal averagedNormal(int dimension, const std::vector<FaceAtNode>& faces, 
         case FaceType::Line2: addFace<FaceType::Line2>(face, s, target); break;
         case FaceType::Tri3: addFace<FaceType::Tri3>(face, s, target); break;
         case FaceType::Quad4: addFace<FaceType::Quad4>(face, s, target); break;
+        default: throw InternalError("a quadratic face in the nodal normals (ContactInterface splits them)");
       }
     }
   } catch (const Error& e) {
