@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "coulomb/fem/ElementKernel.hpp"
+#include "coulomb/fem/StressKernel.hpp"
 #include "fem_test_support.hpp"
 
 namespace coulomb::fem::test {
@@ -61,6 +62,53 @@ void checkPatch(const MaterialParameters& m, const typename C::Vec& X, FaceInteg
   for (int k = 0; k < C::dofs; ++k) EXPECT_NEAR(r[k], f[k], 1e-10 * scale) << "dof " << k;
 }
 
+/// The cell moved to x >= 2 (an axisymmetric cell away from the axis; 3D cells too, harmlessly).
+template <typename C>
+typename C::Vec offAxis(typename C::Vec X) {
+  for (int a = 0; a < C::nodes; ++a) X[a * C::dim] += 2.0;
+  return X;
+}
+
+// Axisymmetric (2D cells): u_r = c r, u_z = e z + g has the constant strains
+// eps_rr = eps_tt = c, eps_zz = e, a constant stress with sigma_rr = sigma_tt,
+// which is in equilibrium in cylindrical coordinates (d sigma_rr / dr +
+// (sigma_rr - sigma_tt) / r = 0): the residual is the ring's boundary
+// forces, \oint N_a sigma n 2 pi r ds, on affine cells to round-off.
+TYPED_TEST(FemElasticKernel, AxisymmetricUniformExpansionIsInEquilibrium) {
+  using C = TypeParam;
+  if constexpr (C::dim == 2) {
+    const double c = 2e-3, e = -1e-3;
+    const auto X = offAxis<C>(distortedCoordinates<C::type>(0.0));
+    typename C::Vec u{};
+    for (int a = 0; a < C::nodes; ++a) u[a * 2] = c * X[a * 2], u[a * 2 + 1] = e * X[a * 2 + 1] + 0.3;
+    double mu, lambda;
+    lame(kE, kNu, mu, lambda);
+    const double tr = 2 * c + e;
+    const std::vector<double> sigma = {lambda * tr + 2 * mu * c, 0.0, 0.0, lambda * tr + 2 * mu * e};
+    const auto r = residualOf<C>(elastic(PlaneAssumption::Axisymmetric), X, u);
+    const auto f = boundaryForcesOfConstantStress<C::type>(X, sigma, kThickness, FaceIntegration::Traction, true);
+    const double scale = maxAbs(f);
+    ASSERT_GT(scale, 0.0);
+    for (int k = 0; k < C::dofs; ++k) EXPECT_NEAR(r[k], f[k], 1e-10 * scale) << "dof " << k;
+    // The recovered stress: sigma_rr, sigma_zz in plane, the hoop stress in the "zz" slot.
+    std::array<double, C::nodes * 6> weighted{};
+    std::array<double, C::nodes> weight{};
+    ASSERT_EQ(cellNodalStress<C::type>(elastic(PlaneAssumption::Axisymmetric), X, u, weighted, weight),
+              KernelStatus::Ok);
+    for (int a = 0; a < C::nodes; ++a) {
+      EXPECT_NEAR(weighted[a * 6 + 0] / weight[a], sigma[0], 1e-12 * kE) << "node " << a;
+      EXPECT_NEAR(weighted[a * 6 + 1] / weight[a], sigma[3], 1e-12 * kE) << "node " << a;
+      EXPECT_NEAR(weighted[a * 6 + 2] / weight[a], sigma[0], 1e-12 * kE) << "node " << a;  // sigma_tt = sigma_rr
+    }
+    // Without the hoop terms (plane strain with the ring's weight) it is not.
+    auto noHoop = elastic(PlaneAssumption::PlaneStrain);
+    const auto plane = residualOf<C>(noHoop, X, u);
+    double differs = 0;
+    for (int k = 0; k < C::dofs; ++k) differs = std::max(differs, std::abs(plane[k] - r[k]));
+    EXPECT_GT(differs, 1e-3 * scale);
+  }
+}
+
 TYPED_TEST(FemElasticKernel, LinearFieldResidualEqualsBoundaryTractionForces) {
   using C = TypeParam;
   // Planar faces (projective map, non-affine for QUAD4/HEX8): faceTractionForces with t = sigma n.
@@ -92,9 +140,10 @@ TYPED_TEST(FemElasticKernel, BodyForceIsDistributedByShapeFunctionIntegrals) {
 
 TYPED_TEST(FemElasticKernel, TangentMatchesCentralDifferences) {
   using C = TypeParam;
-  for (PlaneAssumption plane : {PlaneAssumption::PlaneStrain, PlaneAssumption::PlaneStress}) {
+  for (PlaneAssumption plane :
+       {PlaneAssumption::PlaneStrain, PlaneAssumption::PlaneStress, PlaneAssumption::Axisymmetric}) {
     const MaterialParameters m = elastic(plane);
-    const auto X = distortedCoordinates<C::type>();
+    const auto X = offAxis<C>(distortedCoordinates<C::type>());
     typename C::Vec u;
     for (int k = 0; k < C::dofs; ++k) u[k] = 0.01 * wiggle(k, 1, 3);
     const std::array<double, C::dim> b{};

@@ -1,6 +1,8 @@
 // Exodus side numbering and surface-load integration.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <vector>
 
 #include "coulomb/core/Error.hpp"
@@ -151,6 +153,27 @@ TEST(FemFaceKernel, Line2ForcesMatchClosedForm) {
   faceTractionForces<FaceType::Line2>(X, t, thickness, f);
   for (int a = 0; a < 2; ++a)
     for (int i = 0; i < 2; ++i) EXPECT_NEAR(f[a * 2 + i], t[i] * 5.0 * thickness / 2, 1e-14);
+}
+
+// Axisymmetric: the ring of a LINE2 face from r = 1 to r = 2 at z = 0.5, under
+// a pressure p: the forces are p n 2 pi \int N_a r dr, i.e. 2 pi p (4/6, 5/6)
+// on the ends (\int N_0 r = 2/3, \int N_1 r = 5/6), the thickness ignored.
+// The LINE3 face of the same ring carries the same total force, 3 pi p.
+TEST(FemFaceKernel, AxisymmetricFacesCarryTheRingsForce) {
+  const double p = 2.0, twoPi = 2.0 * M_PI;
+  const std::array<double, 4> X = {2.0, 0.5, 1.0, 0.5};  // outward normal (dy, -dx) = (0, 1)
+  std::array<double, 4> f;
+  facePressureForces<FaceType::Line2>(X, p, 123.0, f, true);
+  EXPECT_NEAR(f[1], -p * twoPi * 5.0 / 6.0, 1e-13);  // node at r = 2
+  EXPECT_NEAR(f[3], -p * twoPi * 2.0 / 3.0, 1e-13);  // node at r = 1
+  EXPECT_NEAR(f[0], 0.0, 1e-14);
+  const std::array<double, 6> X3 = {2.0, 0.5, 1.0, 0.5, 1.5, 0.5};
+  std::array<double, 6> f3;
+  facePressureForces<FaceType::Line3>(X3, p, 123.0, f3, true);
+  EXPECT_NEAR(f3[1] + f3[3] + f3[5], -p * 3.0 * M_PI, 1e-13);
+  const std::array<double, 2> t = {0.0, -p};
+  faceTractionForces<FaceType::Line3>(X3, t, 123.0, f3, true);
+  EXPECT_NEAR(f3[1] + f3[3] + f3[5], -p * 3.0 * M_PI, 1e-13);
 }
 
 TEST(FemFaceKernel, Tri3ForcesMatchClosedForm) {

@@ -293,7 +293,7 @@ std::array<double, D> planarUnitNormal(const std::array<double, N>& Xf, int m) {
 template <FaceType F, CellType T>
 void addFaceForces(const std::array<double, CellTraits<T>::dofs>& X, const std::array<int, mesh::kMaxFaceNodes>& nodes,
                    const std::vector<double>& sigma, double thickness, FaceIntegration how,
-                   std::array<double, CellTraits<T>::dofs>& f) {
+                   std::array<double, CellTraits<T>::dofs>& f, bool axisymmetric) {
   constexpr int d = CellTraits<T>::dim, m = FaceTraits<F>::nodes;
   std::array<double, FaceTraits<F>::dofs> Xf{}, g{};
   for (int k = 0; k < m; ++k)
@@ -303,10 +303,10 @@ void addFaceForces(const std::array<double, CellTraits<T>::dofs>& X, const std::
     std::array<double, d> t{};
     for (int i = 0; i < d; ++i)
       for (int j = 0; j < d; ++j) t[i] += sigma[i * d + j] * n[j];
-    faceTractionForces<F>(Xf, t, thickness, g);
+    faceTractionForces<F>(Xf, t, thickness, g, axisymmetric);
     for (int k = 0; k < m * d; ++k) f[nodes[k / d] * d + k % d] += g[k];
   } else {
-    facePressureForces<F>(Xf, -1.0, thickness, g);
+    facePressureForces<F>(Xf, -1.0, thickness, g, axisymmetric);
     for (int k = 0; k < m; ++k)
       for (int i = 0; i < d; ++i)
         for (int j = 0; j < d; ++j) f[nodes[k] * d + i] += sigma[i * d + j] * g[k * d + j];
@@ -314,16 +314,18 @@ void addFaceForces(const std::array<double, CellTraits<T>::dofs>& X, const std::
 }
 
 /// Sum over the cell's faces of the consistent nodal forces of the traction sigma n of a
-/// constant d x d stress sigma, scattered to the cell's nodes (2D: x thickness).
+/// constant d x d stress sigma, scattered to the cell's nodes (2D: x thickness, or
+/// x 2 pi r when `axisymmetric`).
 template <CellType T>
 std::array<double, CellTraits<T>::dofs> boundaryForcesOfConstantStress(const std::array<double, CellTraits<T>::dofs>& X,
                                                                        const std::vector<double>& sigma,
-                                                                       double thickness, FaceIntegration how) {
+                                                                       double thickness, FaceIntegration how,
+                                                                       bool axisymmetric = false) {
   std::array<double, CellTraits<T>::dofs> f{};
   for (int s = 0; s < mesh::numFaces(T); ++s) {
     std::array<int, mesh::kMaxFaceNodes> nodes;
     faceLocalNodes(T, s, nodes);
-    visitFace<T>(s, [&](auto face) { addFaceForces<decltype(face)::value, T>(X, nodes, sigma, thickness, how, f); });
+    visitFace<T>(s, [&](auto face) { addFaceForces<decltype(face)::value, T>(X, nodes, sigma, thickness, how, f, axisymmetric); });
   }
   return f;
 }

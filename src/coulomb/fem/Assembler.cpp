@@ -191,13 +191,14 @@ struct Assembler::Impl {
     }
     const auto& c = model.neumann[face.condition];
     const double scale = c.function(time);
-    const double thickness = blockMaterial[face.block].thickness;
+    const MaterialParameters& material = blockMaterial[face.block];
+    const bool axisymmetric = isAxisymmetric(material, Traits::dim);
     if (c.kind == NeumannCondition::Kind::Pressure) {
-      facePressureForces<F>(X, c.pressure * scale, thickness, force);
+      facePressureForces<F>(X, c.pressure * scale, material.thickness, force, axisymmetric);
     } else {
       std::array<double, Traits::dim> t{};
       for (int d = 0; d < Traits::dim; ++d) t[d] = c.traction[d] * scale;
-      faceTractionForces<F>(X, t, thickness, force);
+      faceTractionForces<F>(X, t, material.thickness, force, axisymmetric);
     }
     for (int i = 0; i < Traits::dofs; ++i) r[ldof[i]] -= force[i];  // residual = internal − external
   }

@@ -50,21 +50,31 @@ KernelStatus linearElastic(const MaterialParameters& material, const std::array<
   const TabulatedShape<S>& tab = tabulatedShape<S>();
   const double mu = lameParameters(material).mu;
   const double lam = inPlaneLambda(material, d);
-  const double scale = d == 2 ? material.thickness : 1.0;
+  const bool axisymmetric = isAxisymmetric(material, d);
   for (int q = 0; q < tab.points; ++q) {
     std::array<double, nd> G;
     const double detJ = physicalGradients<S>(X, tab.dNdxi[q], G);
     if (!(detJ > 0.0)) return fail<T>(KernelStatus::InvertedReference, residual, tangent);
-    const double wdV = tab.weight[q] * detJ * scale;
+    // Axisymmetric: the hoop strain u_r / r, whose variation N_a / r acts
+    // on the radial DoFs (R[a] below; zero otherwise).
+    double r = 0.0, hoop = 0.0;
+    std::array<double, n> R{};
+    for (int a = 0; a < n; ++a) r += tab.N[q][a] * X[a * d];
+    if (axisymmetric) {
+      if (!(r > 0.0)) return fail<T>(KernelStatus::InvertedReference, residual, tangent);
+      for (int a = 0; a < n; ++a) R[a] = tab.N[q][a] / r, hoop += R[a] * u[a * d];
+    }
+    const double wdV = tab.weight[q] * detJ * outOfPlaneMeasure(material, d, r);
     const std::array<double, d * d> H = displacementGradient<n, d>(u, G);
-    double tr = 0.0;
+    double tr = hoop;
     for (int i = 0; i < d; ++i) tr += H[i * d + i];
     double sigma[d][d];
     for (int i = 0; i < d; ++i)
       for (int j = 0; j < d; ++j) sigma[i][j] = mu * (H[i * d + j] + H[j * d + i]) + (i == j ? lam * tr : 0.0);
+    const double sigmaHoop = lam * tr + 2.0 * mu * hoop;
     for (int a = 0; a < n; ++a)
       for (int i = 0; i < d; ++i) {
-        double s = -tab.N[q][a] * b[i];
+        double s = -tab.N[q][a] * b[i] + (i == 0 ? sigmaHoop * R[a] : 0.0);
         for (int j = 0; j < d; ++j) s += sigma[i][j] * G[a * d + j];
         residual[a * d + i] += wdV * s;
       }
@@ -81,6 +91,15 @@ KernelStatus linearElastic(const MaterialParameters& material, const std::array<
           for (int k = 0; k < d; ++k)
             row[k] += wdV * (lam * Ga[i] * Gb[k] + mu * Ga[k] * Gb[i] + (i == k ? mu * dot : 0.0));
         }
+        if (!axisymmetric) continue;
+        // The hoop terms: tr(eps) gains R_b u_br, sigma_tt = lambda tr + 2 mu R_b u_br
+        // acts on the radial rows through R_a.
+        for (int i = 0; i < d; ++i)
+          for (int k = 0; k < d; ++k) {
+            double h = (k == 0 ? lam * Ga[i] * R[bb] : 0.0) + (i == 0 ? lam * R[a] * Gb[k] : 0.0);
+            if (i == 0 && k == 0) h += (lam + 2.0 * mu) * R[a] * R[bb];
+            K[(a * d + i) * nd + bb * d + k] += wdV * h;
+          }
       }
   }
   if (tangent) {  // K is symmetric: block (b, a) = block (a, b)^T
@@ -105,7 +124,7 @@ KernelStatus neoHookean(const MaterialParameters& material, const std::array<dou
                   "the neo-Hookean model supports plane strain only in 2D");
   const TabulatedShape<S>& tab = tabulatedShape<S>();
   const LameParameters lame = lameParameters(material);
-  const double scale = d == 2 ? material.thickness : 1.0;
+  const double scale = outOfPlaneMeasure(material, d, 0.0);  // plane strain or 3D: no radius
   for (int q = 0; q < tab.points; ++q) {
     std::array<double, nd> G;
     const double detJ = physicalGradients<S>(X, tab.dNdxi[q], G);

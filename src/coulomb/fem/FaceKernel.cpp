@@ -31,6 +31,19 @@ std::array<double, FaceTraits<F>::dim> areaNormal(const std::array<double, FaceT
   return nd;
 }
 
+/// The 2D out-of-plane measure at quadrature point q: 2 pi x when
+/// axisymmetric, else the thickness (1 for 3D faces).
+template <mesh::FaceType F>
+double outOfPlane(const std::array<double, FaceTraits<F>::dofs>& X, int q, double thickness, bool axisymmetric) {
+  constexpr int n = FaceTraits<F>::nodes, d = FaceTraits<F>::dim;
+  if (d != 2) return 1.0;
+  if (!axisymmetric) return thickness;
+  const TabulatedShape<FaceTraits<F>::shape>& tab = tabulatedShape<FaceTraits<F>::shape>();
+  double r = 0.0;
+  for (int a = 0; a < n; ++a) r += tab.N[q][a] * X[a * d];
+  return 6.283185307179586 * r;
+}
+
 template <int D>
 double norm(const std::array<double, D>& v) {
   double s = 0.0;
@@ -43,13 +56,12 @@ double norm(const std::array<double, D>& v) {
 template <mesh::FaceType F>
 void faceTractionForces(const std::array<double, FaceTraits<F>::dofs>& X,
                         const std::array<double, FaceTraits<F>::dim>& traction, double thickness,
-                        std::array<double, FaceTraits<F>::dofs>& force) {
+                        std::array<double, FaceTraits<F>::dofs>& force, bool axisymmetric) {
   constexpr int n = FaceTraits<F>::nodes, d = FaceTraits<F>::dim;
   const TabulatedShape<FaceTraits<F>::shape>& tab = tabulatedShape<FaceTraits<F>::shape>();
-  const double scale = d == 2 ? thickness : 1.0;
   force.fill(0.0);
   for (int q = 0; q < tab.points; ++q) {
-    const double dA = tab.weight[q] * norm<d>(areaNormal<F>(X, q)) * scale;
+    const double dA = tab.weight[q] * norm<d>(areaNormal<F>(X, q)) * outOfPlane<F>(X, q, thickness, axisymmetric);
     for (int a = 0; a < n; ++a)
       for (int i = 0; i < d; ++i) force[a * d + i] += tab.N[q][a] * traction[i] * dA;
   }
@@ -57,14 +69,13 @@ void faceTractionForces(const std::array<double, FaceTraits<F>::dofs>& X,
 
 template <mesh::FaceType F>
 void facePressureForces(const std::array<double, FaceTraits<F>::dofs>& X, double pressure, double thickness,
-                        std::array<double, FaceTraits<F>::dofs>& force) {
+                        std::array<double, FaceTraits<F>::dofs>& force, bool axisymmetric) {
   constexpr int n = FaceTraits<F>::nodes, d = FaceTraits<F>::dim;
   const TabulatedShape<FaceTraits<F>::shape>& tab = tabulatedShape<FaceTraits<F>::shape>();
-  const double scale = d == 2 ? thickness : 1.0;
   force.fill(0.0);
   for (int q = 0; q < tab.points; ++q) {
     const std::array<double, d> ndA = areaNormal<F>(X, q);
-    const double w = -pressure * tab.weight[q] * scale;
+    const double w = -pressure * tab.weight[q] * outOfPlane<F>(X, q, thickness, axisymmetric);
     for (int a = 0; a < n; ++a)
       for (int i = 0; i < d; ++i) force[a * d + i] += w * tab.N[q][a] * ndA[i];
   }
@@ -92,9 +103,9 @@ std::array<double, FaceTraits<F>::dim> faceAreaVector(const std::array<double, F
 #define COULOMB_INSTANTIATE_FACE(F)                                                                         \
   template void faceTractionForces<F>(const std::array<double, FaceTraits<F>::dofs>&,                       \
                                       const std::array<double, FaceTraits<F>::dim>&, double,                \
-                                      std::array<double, FaceTraits<F>::dofs>&);                            \
+                                      std::array<double, FaceTraits<F>::dofs>&, bool);                      \
   template void facePressureForces<F>(const std::array<double, FaceTraits<F>::dofs>&, double, double,       \
-                                      std::array<double, FaceTraits<F>::dofs>&);                            \
+                                      std::array<double, FaceTraits<F>::dofs>&, bool);                      \
   template double faceArea<F>(const std::array<double, FaceTraits<F>::dofs>&);                              \
   template std::array<double, FaceTraits<F>::dim> faceAreaVector<F>(const std::array<double, FaceTraits<F>::dofs>&);
 COULOMB_INSTANTIATE_FACE(mesh::FaceType::Line2)

@@ -24,21 +24,22 @@ struct FaceTraits {
 /// @brief Consistent nodal forces of a uniform traction t: f_a = \int_A N_a t dA (2D: x thickness).
 ///
 /// dA is the reference area element |dX/dxi x dX/deta| dxi deta (2D: |dX/dxi| dxi);
-/// `thickness` is ignored for 3D faces. force is overwritten.
+/// `thickness` is ignored for 3D faces; `axisymmetric` (2D): 2 pi r instead of the
+/// thickness, r = x at each quadrature point (the whole ring's force). force is overwritten.
 template <mesh::FaceType F>
 void faceTractionForces(const std::array<double, FaceTraits<F>::dofs>& X,
                         const std::array<double, FaceTraits<F>::dim>& traction, double thickness,
-                        std::array<double, FaceTraits<F>::dofs>& force);
+                        std::array<double, FaceTraits<F>::dofs>& force, bool axisymmetric = false);
 
 /// @brief Consistent nodal forces of a uniform pressure: f_a = -p \int_A N_a n dA (2D: x thickness).
 ///
 /// p > 0 pushes into the body. n dA = dX/dxi x dX/deta dxi deta (2D: (dy, -dx) dxi) is the
 /// pointwise outward area element, so warped Quad4 faces are integrated exactly (curved
 /// quadratic faces to the order of their rule).
-/// `thickness` is ignored for 3D faces. force is overwritten.
+/// `thickness` is ignored for 3D faces; `axisymmetric` as above. force is overwritten.
 template <mesh::FaceType F>
 void facePressureForces(const std::array<double, FaceTraits<F>::dofs>& X, double pressure, double thickness,
-                        std::array<double, FaceTraits<F>::dofs>& force);
+                        std::array<double, FaceTraits<F>::dofs>& force, bool axisymmetric = false);
 
 /// @brief Reference area \int_A dA of a face (2D: edge length, no thickness).
 template <mesh::FaceType F>

@@ -22,15 +22,16 @@ double inPlaneLambda(const MaterialParameters& material, int dim) {
 }
 
 template <int Dim>
-std::array<double, 6> linearElasticStress(const MaterialParameters& material, const std::array<double, Dim * Dim>& H) {
+std::array<double, 6> linearElasticStress(const MaterialParameters& material, const std::array<double, Dim * Dim>& H,
+                                          double hoopStrain) {
   const LameParameters lame = lameParameters(material);
   const double lam = inPlaneLambda(material, Dim);
   std::array<double, 6> s{};
   if constexpr (Dim == 2) {
-    const double tr = H[0] + H[3];
+    const double tr = H[0] + H[3] + hoopStrain;
     s[0] = lam * tr + 2.0 * lame.mu * H[0];
     s[1] = lam * tr + 2.0 * lame.mu * H[3];
-    s[2] = material.plane == PlaneAssumption::PlaneStrain ? lame.lambda * tr : 0.0;
+    s[2] = material.plane == PlaneAssumption::PlaneStress ? 0.0 : lame.lambda * tr + 2.0 * lame.mu * hoopStrain;
     s[3] = lame.mu * (H[1] + H[2]);
   } else {
     const double tr = H[0] + H[4] + H[8];
@@ -71,8 +72,8 @@ std::array<double, 6> neoHookeanCauchyStress(const MaterialParameters& material,
   return s;
 }
 
-template std::array<double, 6> linearElasticStress<2>(const MaterialParameters&, const std::array<double, 4>&);
-template std::array<double, 6> linearElasticStress<3>(const MaterialParameters&, const std::array<double, 9>&);
+template std::array<double, 6> linearElasticStress<2>(const MaterialParameters&, const std::array<double, 4>&, double);
+template std::array<double, 6> linearElasticStress<3>(const MaterialParameters&, const std::array<double, 9>&, double);
 template std::array<double, 6> neoHookeanCauchyStress<2>(const MaterialParameters&, const std::array<double, 4>&);
 template std::array<double, 6> neoHookeanCauchyStress<3>(const MaterialParameters&, const std::array<double, 9>&);
 

@@ -6,7 +6,12 @@
 /// Tensors are row-major Dim x Dim arrays: H_iJ = du_i/dX_J, F = I + H.
 /// Voigt order for stresses is always 6 entries: xx yy zz xy yz xz.
 /// 2D cells live in the x-y plane; plane strain means F_zz = 1 (eps_zz = 0),
-/// plane stress means sigma_zz = 0 (linear elastic only).
+/// plane stress means sigma_zz = 0 (linear elastic only). Axisymmetric: x is
+/// the radius r >= 0 and y the axis z of a body of revolution (seed's Axisym
+/// conditions), the out-of-plane strain is the hoop strain eps_tt = u_r / r,
+/// the "zz" stress entry the hoop stress sigma_tt, and volume and surface
+/// integrals take 2 pi r (forces and reactions are those of the whole ring;
+/// linear elastic only).
 #include <array>
 #include <cmath>
 
@@ -16,15 +21,28 @@ namespace coulomb::fem {
 enum class MaterialModel { LinearElastic, NeoHookean };
 
 /// @brief Out-of-plane assumption of 2D cells (ignored for 3D cells).
-enum class PlaneAssumption { PlaneStrain, PlaneStress };
+enum class PlaneAssumption { PlaneStrain, PlaneStress, Axisymmetric };
 
 /// @brief Everything the element kernels need to know about a block's material.
 struct MaterialParameters {
   MaterialModel model = MaterialModel::LinearElastic;
   double youngsModulus = 0, poissonRatio = 0;
   PlaneAssumption plane = PlaneAssumption::PlaneStrain;
-  double thickness = 1.0;  ///< 2D only: volume integrals are multiplied by it
+  double thickness = 1.0;  ///< 2D only: volume integrals are multiplied by it (not axisymmetric ones)
 };
+
+/// @brief A 2D block's axisymmetric (PlaneAssumption::Axisymmetric).
+inline bool isAxisymmetric(const MaterialParameters& material, int dim) {
+  return dim == 2 && material.plane == PlaneAssumption::Axisymmetric;
+}
+
+/// @brief What a 2D integral over a cell or face is multiplied by at a point
+/// of radius `r` (its x): 2 pi r when axisymmetric, else the thickness; 1 in 3D.
+inline double outOfPlaneMeasure(const MaterialParameters& material, int dim, double r) {
+  if (dim != 2) return 1.0;
+  constexpr double kTwoPi = 6.283185307179586;
+  return material.plane == PlaneAssumption::Axisymmetric ? kTwoPi * r : material.thickness;
+}
 
 /// @brief Lame parameters mu = E/(2(1+nu)), lambda = E nu/((1+nu)(1-2nu)).
 struct LameParameters {
@@ -38,13 +56,16 @@ LameParameters lameParameters(const MaterialParameters& material);
 /// lambda itself in 3D and plane strain, 2 lambda mu/(lambda + 2 mu) in plane stress.
 double inPlaneLambda(const MaterialParameters& material, int dim);
 
-/// @brief Small-strain Cauchy stress (Voigt, 6 entries) from the displacement gradient H.
+/// @brief Small-strain Cauchy stress (Voigt, 6 entries) from the displacement gradient H
+/// (and, axisymmetric, the hoop strain u_r / r).
 ///
 /// eps = (H + H^T)/2, sigma = lambda' tr(eps) I + 2 mu eps in the plane (lambda' from
 /// inPlaneLambda); 2D: sigma_zz = lambda (eps_xx + eps_yy) = nu (sigma_xx + sigma_yy) for plane
-/// strain, 0 for plane stress; sigma_yz = sigma_xz = 0.
+/// strain, 0 for plane stress, lambda tr(eps) + 2 mu eps_tt with tr(eps) including the hoop
+/// strain eps_tt when axisymmetric; sigma_yz = sigma_xz = 0.
 template <int Dim>
-std::array<double, 6> linearElasticStress(const MaterialParameters& material, const std::array<double, Dim * Dim>& H);
+std::array<double, 6> linearElasticStress(const MaterialParameters& material, const std::array<double, Dim * Dim>& H,
+                                          double hoopStrain = 0.0);
 
 /// @brief Neo-Hookean Cauchy stress sigma = P F^T / J (Voigt, 6 entries) for det F > 0.
 ///

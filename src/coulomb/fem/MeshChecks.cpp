@@ -157,6 +157,25 @@ void checkCoincidentNodes(const mesh::GlobalMesh& mesh, const std::vector<char>&
               "(gmsh: Coherence; Cubit: merge all), or name the touching surfaces in a contact pair");
 }
 
+void checkAxisymmetricMesh(const mesh::GlobalMesh& mesh, const std::string& file) {
+  const int d = mesh.dimension;
+  std::vector<double> low(d, 0.0), high(d, 0.0);
+  for (long long i = 0; i < mesh.numNodes(); ++i)
+    for (int c = 0; c < d; ++c) {
+      const double x = mesh.coordinates[d * i + c];
+      low[c] = i == 0 ? x : std::min(low[c], x);
+      high[c] = i == 0 ? x : std::max(high[c], x);
+    }
+  double diagonal2 = 0;
+  for (int c = 0; c < d; ++c) diagonal2 += (high[c] - low[c]) * (high[c] - low[c]);
+  const double tolerance = 1e-10 * std::sqrt(diagonal2);
+  for (long long i = 0; i < mesh.numNodes(); ++i)
+    COULOMB_REQUIRE(mesh.coordinates[d * i] >= -tolerance,
+                    "mesh '" << file << "': node " << i + 1 << " has x = " << mesh.coordinates[d * i]
+                             << " < 0, but with 'Problem/Plane Assumption' = 'Axisymmetric' x is the radius (the "
+                                "axis is x = 0)");
+}
+
 NodeElementAdjacency nodeElementAdjacency(const mesh::GlobalMesh& mesh) {
   NodeElementAdjacency a;
   const auto n = static_cast<std::size_t>(mesh.numNodes());

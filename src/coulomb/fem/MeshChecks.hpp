@@ -38,6 +38,10 @@ std::array<long long, 2> findCoincidentNodes(const mesh::GlobalMesh& mesh, const
 /// Throws, naming `file` and the two nodes, when findCoincidentNodes finds a pair.
 void checkCoincidentNodes(const mesh::GlobalMesh& mesh, const std::vector<char>& exempt, const std::string& file);
 
+/// An axisymmetric mesh lies in x >= 0 (x is the radius): throws, naming
+/// `file`, the first node with x below -1e-10 of the bounding-box diagonal.
+void checkAxisymmetricMesh(const mesh::GlobalMesh& mesh, const std::string& file);
+
 /// The element other than `element` that has every node of side `side` of
 /// `element` (the face is inside the body), or -1 for a boundary face.
 /// `adjacency` is from nodeElementAdjacency.

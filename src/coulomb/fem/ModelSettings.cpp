@@ -26,7 +26,8 @@ namespace {
 const io::Choices<MaterialModel> kMaterialModels{{"Linear Elastic", MaterialModel::LinearElastic},
                                                  {"Neo-Hookean", MaterialModel::NeoHookean}};
 const io::Choices<PlaneAssumption> kPlaneAssumptions{{"Plane Strain", PlaneAssumption::PlaneStrain},
-                                                     {"Plane Stress", PlaneAssumption::PlaneStress}};
+                                                     {"Plane Stress", PlaneAssumption::PlaneStress},
+                                                     {"Axisymmetric", PlaneAssumption::Axisymmetric}};
 /// A Dirichlet condition's component; -1: all of them.
 const io::Choices<int> kComponents{{"x", 0}, {"y", 1}, {"z", 2}, {"all", -1}};
 const io::Choices<NeumannCondition::Kind> kLoadTypes{{"Pressure", NeumannCondition::Kind::Pressure},
@@ -74,7 +75,9 @@ void addValidModelParameters(ParameterList& valid) {
 
   ParameterList& problem = valid.sublist("Problem", false, "Modelling assumptions");
   problem.set("Plane Assumption", std::string(kPlaneAssumptions.name(PlaneAssumption::PlaneStrain)),
-              "2D meshes: plane strain or plane stress", kPlaneAssumptions.validator());
+              "2D meshes: plane strain, plane stress, or axisymmetric (x = radius >= 0, y = axis; forces and "
+              "reactions of the whole ring, stress_zz = hoop stress; linear elastic)",
+              kPlaneAssumptions.validator());
 
   ParameterList& functions = valid.sublist("Functions", false, "Piecewise-linear functions of pseudo time, named freely");
   ParameterList& function = functions.sublist("*", false, "a function");
@@ -138,8 +141,11 @@ ModelSettings parseModelSettings(const ParameterList& deck, int dimension) {
     p.youngsModulus = m.get<double>("Young's Modulus");
     p.poissonRatio = m.get<double>("Poisson's Ratio");
     p.plane = plane;
-    COULOMB_REQUIRE(!(dimension == 2 && p.plane == PlaneAssumption::PlaneStress && p.model == MaterialModel::NeoHookean),
+    COULOMB_REQUIRE(!(dimension == 2 && p.plane != PlaneAssumption::PlaneStrain && p.model == MaterialModel::NeoHookean),
                     "deck: '" << where << "' is Neo-Hookean, which supports only 'Problem/Plane Assumption' = 'Plane Strain'");
+    COULOMB_REQUIRE(!(dimension == 2 && p.plane == PlaneAssumption::Axisymmetric && block.isParameter("Thickness")),
+                    "deck: 'Element Blocks/" << blockName << "/Thickness' has no meaning with 'Problem/Plane Assumption' "
+                                                            "= 'Axisymmetric' (the ring is whole)");
     COULOMB_REQUIRE(dimension == 2 || !block.isParameter("Thickness"),
                     "deck: 'Element Blocks/" << blockName << "/Thickness' is for 2D meshes, but the mesh is 3D");
     p.thickness = io::valueOrDefault<double>(block, validBlock, "Thickness");

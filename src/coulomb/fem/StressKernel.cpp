@@ -16,7 +16,6 @@ KernelStatus cellNodalStress(const MaterialParameters& material, const std::arra
   constexpr int n = CellTraits<T>::nodes, d = CellTraits<T>::dim, nd = CellTraits<T>::dofs;
   constexpr ReferenceShape S = CellTraits<T>::shape;
   const TabulatedShape<S>& tab = tabulatedShape<S>();
-  const double scale = d == 2 ? material.thickness : 1.0;
   weightedStress.fill(0.0);
   weight.fill(0.0);
   for (int q = 0; q < tab.points; ++q) {
@@ -24,6 +23,8 @@ KernelStatus cellNodalStress(const MaterialParameters& material, const std::arra
     const double detJ = physicalGradients<S>(X, tab.dNdxi[q], G);
     KernelStatus status = KernelStatus::Ok;
     std::array<double, 6> sigma{};
+    double r = 0.0;  // x: the radius of an axisymmetric cell
+    for (int a = 0; a < n; ++a) r += tab.N[q][a] * X[a * d];
     if (!(detJ > 0.0)) {
       status = KernelStatus::InvertedReference;
     } else {
@@ -32,7 +33,10 @@ KernelStatus cellNodalStress(const MaterialParameters& material, const std::arra
         for (int i = 0; i < d; ++i)
           for (int j = 0; j < d; ++j) H[i * d + j] += u[a * d + i] * G[a * d + j];
       if (material.model == MaterialModel::LinearElastic) {
-        sigma = linearElasticStress<d>(material, H);
+        double hoop = 0.0;  // axisymmetric: u_r / r
+        if (isAxisymmetric(material, d) && r > 0.0)
+          for (int a = 0; a < n; ++a) hoop += tab.N[q][a] * u[a * d] / r;
+        sigma = linearElasticStress<d>(material, H, hoop);
       } else {
         for (int i = 0; i < d; ++i) H[i * d + i] += 1.0;  // now F
         const double detF = d == 2 ? H[0] * H[3] - H[1] * H[2]
@@ -49,7 +53,7 @@ KernelStatus cellNodalStress(const MaterialParameters& material, const std::arra
       weight.fill(0.0);
       return status;
     }
-    const double wdV = tab.weight[q] * detJ * scale;
+    const double wdV = tab.weight[q] * detJ * outOfPlaneMeasure(material, d, r);
     for (int a = 0; a < n; ++a) {
       // Quadratic cells: N_a^2 (see the header: \int N_a is zero or negative at their corners).
       const double w = wdV * (mesh::isQuadratic(T) ? tab.N[q][a] * tab.N[q][a] : tab.N[q][a]);

@@ -82,10 +82,16 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
   if (!meshOverride.empty()) settings_.meshFile = meshOverride;
   auto global = std::make_shared<mesh::GlobalMesh>(io::readExodus(settings_.meshFile, memoryBudget(*comm_)));
   const auto model = fem::parseModelSettings(*deck, global->dimension);
+  const bool axisymmetric = !model.blockMaterials.empty() &&
+                            fem::isAxisymmetric(model.blockMaterials.begin()->second, global->dimension);
+  if (axisymmetric) fem::checkAxisymmetricMesh(*global, settings_.meshFile);
   mesh_ = std::make_unique<mesh::Mesh>(global, comm_);
   dofs_ = std::make_unique<fem::DofMap>(*mesh_);
   assembler_ = std::make_unique<fem::Assembler>(*mesh_, *dofs_, model);
   auto contactSettings = contact::parseContactSettings(*deck);
+  // The mortar integrals do not take the 2 pi r weight yet (issue 18, item 6).
+  COULOMB_REQUIRE(!axisymmetric || contactSettings.pairs.empty(),
+                  "deck: 'Contact' with 'Problem/Plane Assumption' = 'Axisymmetric' is not supported yet");
   contact::loadFrictionFields(contactSettings, settings_.meshFile);
   if (!contactSettings.pairs.empty())
     contact_ = std::make_unique<contact::ContactModel>(*mesh_, dofs_->ownedMap(), contactSettings, model);
