@@ -112,6 +112,9 @@ public:
     }
     // Master rows: + k t M_jl lambda_j (the recovered force, acting on the master as -f).
     // lambda depends on w and g~ only along driven directions (FrictionalNode.hpp).
+    // Its explicit derivative rows are the same for every master node (scaled by M_jl).
+    std::array<DerivativeRow, dim> lambdaRows;
+    for (int c = 0; c < dim; ++c) lambdaRows[c] = explicitRow(k.dLambda[c]);
     for (const auto& [master, Mjl] : entry.M)
       for (int c = 0; c < dim; ++c) {
         const GlobalOrdinal target = sink.row(master, c);
@@ -123,7 +126,7 @@ public:
         for (int m = 0; m < dim; ++m)
           if (!n.prescribed[m] && k.dLambda[c][m] != 0.0)
             out.tangentTransform.push_back({target, sink.row(n.node, m), kt * Mjl * k.dLambda[c][m]});
-        DerivativeRow row = explicitRow(k.dLambda[c]);
+        DerivativeRow row = lambdaRows[c];  // one triplet per column: M_jl lambdaRow + lambda dM
         for (auto& [key, value] : row) value *= Mjl;
         const auto dM = entry.dM.find(master);
         if (dM != entry.dM.end()) addScaled(row, dM->second, k.lambda[c]);
