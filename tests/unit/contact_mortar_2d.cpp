@@ -181,9 +181,10 @@ TEST(Mortar2D, InvariantUnderRigidMotion) {
 // every input. The configurations are away from topology changes (no master
 // node projects within 1e-2 of a slave node), so the step h = 1e-6 keeps the
 // overlap topology.
-void checkDerivatives(const Config& c) {
-  const MortarSegment2DLinearization lin = linearizeSegment2D(c.xs, c.ns, c.xm);
-  const auto ref = integrateSegment2D<double>(c.xs, c.ns, c.xm);
+void checkDerivatives(const Config& c, bool axisymmetric = false) {
+  const double tol = 1e-10;
+  const MortarSegment2DLinearization lin = linearizeSegment2D(c.xs, c.ns, c.xm, tol, axisymmetric);
+  const auto ref = integrateSegment2D<double>(c.xs, c.ns, c.xm, tol, axisymmetric);
   ASSERT_TRUE(lin.value.contributes);
   for (int j = 0; j < 2; ++j) {
     EXPECT_DOUBLE_EQ(lin.value.D[j], ref.D[j]);
@@ -197,8 +198,8 @@ void checkDerivatives(const Config& c) {
     L2* arrays[2][3] = {{&p.xs, &p.ns, &p.xm}, {&m.xs, &m.ns, &m.xm}};
     (*arrays[0][i / 4])[(i % 4) / 2][i % 2] += h;
     (*arrays[1][i / 4])[(i % 4) / 2][i % 2] -= h;
-    const auto rp = integrateSegment2D<double>(p.xs, p.ns, p.xm);
-    const auto rm = integrateSegment2D<double>(m.xs, m.ns, m.xm);
+    const auto rp = integrateSegment2D<double>(p.xs, p.ns, p.xm, tol, axisymmetric);
+    const auto rm = integrateSegment2D<double>(m.xs, m.ns, m.xm, tol, axisymmetric);
     ASSERT_TRUE(rp.contributes && rm.contributes);
     for (int j = 0; j < 2; ++j) {
       const double fdD = (rp.D[j] - rm.D[j]) / (2 * h), fdG = (rp.gap[j] - rm.gap[j]) / (2 * h);
@@ -222,6 +223,37 @@ TEST(Mortar2DLinearization, BothEndsProjectedMasterNodes) { checkDerivatives(til
 TEST(Mortar2DLinearization, MasterCoveringTheSlave) { checkDerivatives(tilted(seg(2.6, 0.4, -0.7, 0.05))); }
 
 TEST(Mortar2DLinearization, PenetratingMaster) { checkDerivatives(tilted(seg(1.7, -0.1, 0.3, 0.15))); }
+
+// Axisymmetric (x = r): the same configurations, the 2 pi r weight and the
+// dual basis of the ring measure differentiated too (the slave lies at r 0.1 to 2).
+TEST(Mortar2DLinearization, AxisymmetricRings) {
+  checkDerivatives(tilted(seg(1.3, 0.3, -0.4, 0.25)), true);
+  checkDerivatives(tilted(seg(2.6, 0.4, -0.7, 0.05)), true);
+}
+
+// The ring's dual basis is biorthogonal in the measure r ds: a master covering
+// the slave (a ring from r = 1 to 3, gap g) gives D_j = 2 pi \int N_j r ds,
+// M = diag(D) for the matching master, g~_j = g D_j, and sum_l M_jl = D_j.
+TEST(Mortar2D, AxisymmetricDualBasisIsBiorthogonalInTheRingMeasure) {
+  const double g = 0.05, twoPi = 2 * M_PI;
+  const L2 xs = seg(3.0, 0.0, 1.0, 0.0);  // slave normal (0, 1) towards the master above
+  const auto r = integrateSegment2D<double>(xs, kUp, seg(3.0, g, 1.0, g), 1e-10, true);
+  ASSERT_TRUE(r.contributes);
+  const double D[2] = {twoPi * 2.0 * (2 * 3.0 + 1.0) / 6.0, twoPi * 2.0 * (3.0 + 2 * 1.0) / 6.0};
+  for (int j = 0; j < 2; ++j) {
+    EXPECT_NEAR(r.D[j], D[j], 1e-12 * D[j]);
+    EXPECT_NEAR(r.gap[j], g * D[j], 1e-12 * D[j]);
+    EXPECT_NEAR(r.M[j][j], D[j], 1e-12 * D[j]);
+    EXPECT_NEAR(r.M[j][1 - j], 0.0, 1e-12 * D[j]);
+  }
+  // A master half as long: sum_l M_jl = D_j still (partition of unity).
+  const auto half = integrateSegment2D<double>(xs, kUp, seg(2.0, g, 1.0, g), 1e-10, true);
+  for (int j = 0; j < 2; ++j) EXPECT_NEAR(half.M[j][0] + half.M[j][1], half.D[j], 1e-12 * D[j]);
+  // Equal radii would be the plane basis: the coefficients.
+  const auto A = axisymmetricDual<double>(seg(2.0, 0.0, 2.0, 1.0));
+  EXPECT_NEAR(A[0][0], 2.0, 1e-14);
+  EXPECT_NEAR(A[0][1], -1.0, 1e-14);
+}
 
 }  // namespace
 }  // namespace coulomb::contact

@@ -89,9 +89,6 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
   dofs_ = std::make_unique<fem::DofMap>(*mesh_);
   assembler_ = std::make_unique<fem::Assembler>(*mesh_, *dofs_, model);
   auto contactSettings = contact::parseContactSettings(*deck);
-  // The mortar integrals do not take the 2 pi r weight yet (issue 18, item 6).
-  COULOMB_REQUIRE(!axisymmetric || contactSettings.pairs.empty(),
-                  "deck: 'Contact' with 'Problem/Plane Assumption' = 'Axisymmetric' is not supported yet");
   contact::loadFrictionFields(contactSettings, settings_.meshFile);
   if (!contactSettings.pairs.empty())
     contact_ = std::make_unique<contact::ContactModel>(*mesh_, dofs_->ownedMap(), contactSettings, model);

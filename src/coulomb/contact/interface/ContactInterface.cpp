@@ -88,8 +88,8 @@ int indexIn(const std::vector<long long>& sorted, long long value) {
 }  // namespace
 
 ContactInterface::ContactInterface(const mesh::Mesh& mesh, const std::string& slaveSet,
-                                   const std::string& masterSet, const std::string& what)
-    : dimension_(mesh.dimension()), comm_(mesh.comm()) {
+                                   const std::string& masterSet, const std::string& what, bool axisymmetric)
+    : dimension_(mesh.dimension()), axisymmetric_(axisymmetric && mesh.dimension() == 2), comm_(mesh.comm()) {
   const mesh::GlobalMesh& global = mesh.global();
   const std::size_t slaveIndex = mesh.sideSetIndex(slaveSet, what + " (slave side set)");
   const std::size_t masterIndex = mesh.sideSetIndex(masterSet, what + " (master side set)");

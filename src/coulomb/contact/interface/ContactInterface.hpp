@@ -49,10 +49,13 @@ public:
   /// @throws coulomb::Error naming the set when it is unknown, empty, when
   /// slave and master are the same set, or when a face is in both sets.
   /// Not collective (every rank detects the same errors).
+  /// `axisymmetric` (2D): the faces are rings (x = r), the mortar integrals
+  /// take 2 pi r (MortarPass).
   ContactInterface(const mesh::Mesh& mesh, const std::string& slaveSet, const std::string& masterSet,
-                   const std::string& what = "contact");
+                   const std::string& what = "contact", bool axisymmetric = false);
 
   int dimension() const { return dimension_; }
+  bool axisymmetric() const { return axisymmetric_; }
   const Teuchos::RCP<const Teuchos::Comm<int>>& comm() const { return comm_; }
   const std::string& slaveSetName() const { return slaveName_; }
 
@@ -89,6 +92,7 @@ public:
 
 private:
   int dimension_ = 3;
+  bool axisymmetric_ = false;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   std::string slaveName_, masterName_;
   std::vector<ContactFace> slaveFaces_, masterFaces_;

@@ -19,6 +19,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 #include <algorithm>
+#include <cmath>
 
 #include "coulomb/contact/mortar/MortarSegment2D.hpp"
 #include "coulomb/contact/mortar/MortarSegment3D.hpp"
@@ -146,13 +147,14 @@ void pair2D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
   const auto xm = faceCoordinates<F::value>(m, p.x);
   // Most candidate pairs of a search do not overlap: find out with plain
   // doubles before paying for the derivatives (Sacado, 8-36 times the work).
-  if (p.withDerivatives && integrateSegment2D<double>(xs, ns, xm, p.tolerance).contributes) {
-    const MortarSegment2DLinearization lin = linearizeSegment2D(xs, ns, xm, p.tolerance);
+  const bool ring = p.contact.axisymmetric();
+  if (p.withDerivatives && integrateSegment2D<double>(xs, ns, xm, p.tolerance, ring).contributes) {
+    const MortarSegment2DLinearization lin = linearizeSegment2D(xs, ns, xm, p.tolerance, ring);
     if (!lin.value.contributes) return;
     const InputChain chain = buildChain(2, s, m, p.contact, p.normals);
     accumulate(lin.value, &lin, &chain, s, m, p.out);
   } else if (!p.withDerivatives) {
-    const MortarSegment2D<double> value = integrateSegment2D<double>(xs, ns, xm, p.tolerance);
+    const MortarSegment2D<double> value = integrateSegment2D<double>(xs, ns, xm, p.tolerance, ring);
     if (!value.contributes) return;
     accumulate(value, static_cast<const MortarSegment2DLinearization*>(nullptr), nullptr, s, m, p.out);
   }
@@ -212,7 +214,12 @@ double nodalSupportMeasure(const ContactInterface& contact, const InterfaceConfi
   for (int k = offset[slaveNode]; k < offset[slaveNode + 1]; ++k) {
     const ContactFace& f = contact.slaveFaces()[contact.slaveNodeFaces()[k]];
     const int corner = contact.slaveNodeFaceCorners()[k];
-    if (f.type == FaceType::Line2)
+    if (f.type == FaceType::Line2 && contact.axisymmetric()) {
+      // The ring: 2 pi \int N_j r ds = 2 pi L (2 r_j + r_other) / 6.
+      const auto xs = faceCoordinates<FaceType::Line2>(f, x);
+      const double L = std::hypot(xs[1][0] - xs[0][0], xs[1][1] - xs[0][1]);
+      measure += 6.283185307179586 * L * (2.0 * xs[corner][0] + xs[1 - corner][0]) / 6.0;
+    } else if (f.type == FaceType::Line2)
       measure += faceMass<FaceType::Line2, double>(faceCoordinates<FaceType::Line2>(f, x)).De[corner];
     else if (f.type == FaceType::Tri3)
       measure += faceMass<FaceType::Tri3, double>(faceCoordinates<FaceType::Tri3>(f, x)).De[corner];

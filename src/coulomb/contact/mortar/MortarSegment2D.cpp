@@ -12,6 +12,7 @@ namespace {
 
 using Fad12 = SegmentFad2D;
 constexpr mesh::FaceType kLine = mesh::FaceType::Line2;
+constexpr double kTwoPi = 6.283185307179586;
 
 template <typename T>
 double valueOf(const T& x) {
@@ -81,8 +82,20 @@ bool projectOntoSlave(const std::array<T, 2>& p, const std::array<T, 2>& c, cons
 }  // namespace
 
 template <typename T>
+NodalMatrix<kLine, T> axisymmetricDual(const Line2Nodes<T>& xs) {
+  // D_e M_e^-1 with the common factor L / 12 cancelled: De = 2 (2 r0 + r1, r0 + 2 r1), M = [[a, b], [b, c]].
+  const T r0 = xs[0][0], r1 = xs[1][0];
+  const T a = 3.0 * r0 + r1, b = r0 + r1, c = r0 + 3.0 * r1, det = a * c - b * b;
+  const T d0 = 2.0 * (2.0 * r0 + r1), d1 = 2.0 * (r0 + 2.0 * r1);
+  NodalMatrix<kLine, T> A;
+  A[0] = {T(d0 * c / det), T(-d0 * b / det)};
+  A[1] = {T(-d1 * b / det), T(d1 * a / det)};
+  return A;
+}
+
+template <typename T>
 MortarSegment2D<T> integrateSegment2D(const Line2Nodes<T>& xs, const Line2Nodes<T>& ns, const Line2Nodes<T>& xm,
-                                      double relativeTolerance) {
+                                      double relativeTolerance, bool axisymmetric) {
   using std::sqrt;
   MortarSegment2D<T> out;
   for (int j = 0; j < 2; ++j) {
@@ -112,15 +125,15 @@ MortarSegment2D<T> integrateSegment2D(const Line2Nodes<T>& xs, const Line2Nodes<
   out.contributes = true;
   out.slaveInterval = {valueOf(lo), valueOf(hi)};
 
-  const NodalMatrix<kLine, T> A = dualCoefficients<kLine, T>(xs);
+  const NodalMatrix<kLine, T> A = axisymmetric ? axisymmetricDual<T>(xs) : dualCoefficients<kLine, T>(xs);
   const T J = sqrt(d[0] * d[0] + d[1] * d[1]);  // |dx^1/dxi|, constant on a straight segment
   const T half = 0.5 * (hi - lo), mid = 0.5 * (hi + lo);
   const GaussLegendre5& rule = gaussLegendre5();
   for (int g = 0; g < 5; ++g) {
     const FacePoint<kLine, T> xi{T(mid + half * rule.x[g])};
-    const T w = rule.w[g] * half * J;
-    const NodalValues<kLine, T> phi = dualShapeValues<kLine, T, T>(A, xi);
     const std::array<T, 2> x1{T(c[0] + xi[0] * d[0]), T(c[1] + xi[0] * d[1])};
+    const T w = rule.w[g] * half * J * (axisymmetric ? T(kTwoPi * x1[0]) : T(1.0));
+    const NodalValues<kLine, T> phi = dualShapeValues<kLine, T, T>(A, xi);
     const std::array<T, 2> n{T(a[0] + xi[0] * b[0]), T(a[1] + xi[0] * b[1])};
     // (cm + xi2 dm - x1) × n = 0.
     const std::array<T, 2> r{T(x1[0] - cm[0]), T(x1[1] - cm[1])};
@@ -140,7 +153,8 @@ MortarSegment2D<T> integrateSegment2D(const Line2Nodes<T>& xs, const Line2Nodes<
 }
 
 MortarSegment2DLinearization linearizeSegment2D(const Line2Nodes<double>& xs, const Line2Nodes<double>& ns,
-                                                const Line2Nodes<double>& xm, double relativeTolerance) {
+                                                const Line2Nodes<double>& xm, double relativeTolerance,
+                                                bool axisymmetric) {
   Line2Nodes<Fad12> fxs, fns, fxm;
   for (int a = 0; a < 2; ++a)
     for (int i = 0; i < 2; ++i) {
@@ -148,7 +162,7 @@ MortarSegment2DLinearization linearizeSegment2D(const Line2Nodes<double>& xs, co
       fns[a][i] = Fad12(kSegment2DInputs, 4 + 2 * a + i, ns[a][i]);
       fxm[a][i] = Fad12(kSegment2DInputs, 8 + 2 * a + i, xm[a][i]);
     }
-  const MortarSegment2D<Fad12> r = integrateSegment2D<Fad12>(fxs, fns, fxm, relativeTolerance);
+  const MortarSegment2D<Fad12> r = integrateSegment2D<Fad12>(fxs, fns, fxm, relativeTolerance, axisymmetric);
   MortarSegment2DLinearization lin;
   lin.value.contributes = r.contributes;
   lin.value.slaveInterval = r.slaveInterval;
@@ -170,8 +184,9 @@ MortarSegment2DLinearization linearizeSegment2D(const Line2Nodes<double>& xs, co
 }
 
 template MortarSegment2D<double> integrateSegment2D<double>(const Line2Nodes<double>&, const Line2Nodes<double>&,
-                                                            const Line2Nodes<double>&, double);
+                                                            const Line2Nodes<double>&, double, bool);
 template MortarSegment2D<Fad12> integrateSegment2D<Fad12>(const Line2Nodes<Fad12>&, const Line2Nodes<Fad12>&,
-                                                          const Line2Nodes<Fad12>&, double);
+                                                          const Line2Nodes<Fad12>&, double, bool);
+template NodalMatrix<kLine, double> axisymmetricDual<double>(const Line2Nodes<double>&);
 
 }  // namespace coulomb::contact

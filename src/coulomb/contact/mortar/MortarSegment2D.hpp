@@ -65,13 +65,25 @@ struct MortarSegment2D {
 /// (averaged over the slave faces at the node), xm: master nodes.
 /// `relativeTolerance`: an overlap shorter than relativeTolerance × (slave
 /// parametric length 2) is "no contribution".
+/// `axisymmetric` (x = r, y = z; Plane Assumption = Axisymmetric): the
+/// integrals are over the ring, dA = 2 pi r ds with r = x of the slave point,
+/// and the dual basis is biorthogonal in that measure (axisymmetricDual), so
+/// D stays diagonal; the 2 pi r of D, M and g~ carry through the derivatives.
 template <typename T>
 MortarSegment2D<T> integrateSegment2D(const Line2Nodes<T>& xs, const Line2Nodes<T>& ns, const Line2Nodes<T>& xm,
-                                      double relativeTolerance = 1e-10);
+                                      double relativeTolerance = 1e-10, bool axisymmetric = false);
+
+/// @brief Dual coefficients A = D_e M_e^-1 of a Line2 slave face in the ring
+/// measure r ds (r linear between the nodal radii r_0, r_1; the 2 pi cancels):
+/// D_e = L/6 (2 r_0 + r_1, r_0 + 2 r_1), M_e = L/12 [[3 r_0 + r_1, r_0 + r_1],
+/// [r_0 + r_1, r_0 + 3 r_1]]. Equal radii give the plane [[2, -1], [-1, 2]].
+template <typename T>
+NodalMatrix<mesh::FaceType::Line2, T> axisymmetricDual(const Line2Nodes<T>& xs);
 
 extern template MortarSegment2D<double> integrateSegment2D<double>(const Line2Nodes<double>&,
                                                                    const Line2Nodes<double>&,
-                                                                   const Line2Nodes<double>&, double);
+                                                                   const Line2Nodes<double>&, double, bool);
+extern template NodalMatrix<mesh::FaceType::Line2, double> axisymmetricDual<double>(const Line2Nodes<double>&);
 
 /// Number of inputs of the 2D kernel: xs (4), ns (4), xm (4).
 inline constexpr int kSegment2DInputs = 12;
@@ -92,6 +104,7 @@ struct MortarSegment2DLinearization {
 /// The derivatives are those of the current overlap topology (which ends of the
 /// overlap are slave nodes and which are projected master nodes).
 MortarSegment2DLinearization linearizeSegment2D(const Line2Nodes<double>& xs, const Line2Nodes<double>& ns,
-                                                const Line2Nodes<double>& xm, double relativeTolerance = 1e-10);
+                                                const Line2Nodes<double>& xm, double relativeTolerance = 1e-10,
+                                                bool axisymmetric = false);
 
 }  // namespace coulomb::contact
