@@ -165,6 +165,60 @@ TYPED_TEST(FemNeoHookeanKernel, HomogeneousDeformationResidualEqualsBoundaryTrac
   }
 }
 
+// Axisymmetric (2D cells moved to x >= 2): the tangent against central
+// differences (finitely deformed, hoop stretch included), and a homogeneous
+// finite expansion u_r = c r, u_z = e z (F = diag(1 + c, 1 + e), F_tt = 1 + c:
+// P constant with P_rr = P_tt, in equilibrium) whose residual is the ring's
+// boundary forces \oint N_a P N 2 pi R dS and whose Cauchy stress is the 3D
+// law's, the hoop stress in the "zz" slot.
+TYPED_TEST(FemNeoHookeanKernel, AxisymmetricTangentAndHomogeneousExpansion) {
+  using C = TypeParam;
+  if constexpr (C::dim == 2) {
+    MaterialParameters m = neoHookeanMaterial();
+    m.plane = PlaneAssumption::Axisymmetric;
+    auto X = distortedCoordinates<C::type>();
+    for (int a = 0; a < C::nodes; ++a) X[a * 2] += 2.0;
+    auto u = linearField<C::type>(X, sampleGradient(2, 1.0), {0.1, -0.1, 0.0});
+    for (int k = 0; k < C::dofs; ++k) u[k] += 0.05 * wiggle(k, 2, 5);
+    const std::array<double, 2> b{};
+    typename C::Vec r;
+    typename C::Mat K;
+    ASSERT_EQ(cellResidualTangent<C::type>(m, X, u, b, r, &K), KernelStatus::Ok);
+    const double h = 1e-6;
+    double err = 0.0;
+    for (int k = 0; k < C::dofs; ++k) {
+      auto up = u, um = u;
+      up[k] += h;
+      um[k] -= h;
+      const auto rp = residualOf<C>(m, X, up), rm = residualOf<C>(m, X, um);
+      for (int i = 0; i < C::dofs; ++i) err = std::max(err, std::abs(K[i * C::dofs + k] - (rp[i] - rm[i]) / (2 * h)));
+    }
+    EXPECT_LT(err, 1e-6 * maxAbs(K));
+
+    const double c = 0.15, e = -0.1;
+    const auto Xa = [] {
+      auto x = distortedCoordinates<C::type>(0.0);
+      for (int a = 0; a < C::nodes; ++a) x[a * 2] += 2.0;
+      return x;
+    }();
+    typename C::Vec ua{};
+    for (int a = 0; a < C::nodes; ++a) ua[a * 2] = c * Xa[a * 2], ua[a * 2 + 1] = e * Xa[a * 2 + 1];
+    double mu, lambda;
+    lame(kE, kNu, mu, lambda);
+    double F[3][3] = {{1 + c, 0, 0}, {0, 1 + e, 0}, {0, 0, 1 + c}}, P[3][3], sigma[3][3];
+    neoHookean3(mu, lambda, F, P, sigma);
+    const std::vector<double> Pd = {P[0][0], 0.0, 0.0, P[1][1]};
+    const auto ra = residualOf<C>(m, Xa, ua);
+    const auto f = boundaryForcesOfConstantStress<C::type>(Xa, Pd, kThickness, FaceIntegration::Traction, true);
+    for (int k = 0; k < C::dofs; ++k) EXPECT_NEAR(ra[k], f[k], 1e-10 * maxAbs(f)) << "dof " << k;
+    for (const auto& st : nodalStress<C>(m, Xa, ua)) {
+      EXPECT_NEAR(st[0], sigma[0][0], 1e-12 * kE);
+      EXPECT_NEAR(st[1], sigma[1][1], 1e-12 * kE);
+      EXPECT_NEAR(st[2], sigma[2][2], 1e-12 * kE);
+    }
+  }
+}
+
 TYPED_TEST(FemNeoHookeanKernel, UniaxialStressMatchesClosedForm) {
   using C = TypeParam;
   constexpr int d = C::dim;

@@ -112,6 +112,76 @@ KernelStatus linearElastic(const MaterialParameters& material, const std::array<
   return KernelStatus::Ok;
 }
 
+/// Neo-Hookean on an axisymmetric 2D cell (x = R, y = Z): the deformation
+/// gradient is 3 x 3 with the in-plane block F and the hoop stretch
+/// F_tt = 1 + u_r / R; the 3D first Piola P (Sacado over the five entries)
+/// gives the in-plane rows through the gradients G and the hoop entry P_tt
+/// through N_a / R; dV = 2 pi R dA (the reference configuration).
+template <mesh::CellType T>
+KernelStatus neoHookeanAxisymmetric(const MaterialParameters& material,
+                                    const std::array<double, CellTraits<T>::dofs>& X,
+                                    const std::array<double, CellTraits<T>::dofs>& u,
+                                    const std::array<double, CellTraits<T>::dim>& b,
+                                    std::array<double, CellTraits<T>::dofs>& residual,
+                                    std::array<double, CellTraits<T>::dofs * CellTraits<T>::dofs>* tangent) {
+  constexpr int n = CellTraits<T>::nodes, d = CellTraits<T>::dim, nd = CellTraits<T>::dofs;
+  static_assert(d == 2, "axisymmetric cells are 2D");
+  constexpr ReferenceShape S = CellTraits<T>::shape;
+  constexpr int kVars = 5;  // F_rr, F_rz, F_zr, F_zz, F_tt
+  using Fad = Sacado::Fad::SFad<double, kVars>;
+  const TabulatedShape<S>& tab = tabulatedShape<S>();
+  const LameParameters lame = lameParameters(material);
+  for (int q = 0; q < tab.points; ++q) {
+    std::array<double, nd> G;
+    const double detJ = physicalGradients<S>(X, tab.dNdxi[q], G);
+    double R = 0.0;
+    for (int a = 0; a < n; ++a) R += tab.N[q][a] * X[a * d];
+    if (!(detJ > 0.0) || !(R > 0.0)) return fail<T>(KernelStatus::InvertedReference, residual, tangent);
+    std::array<double, n> NR{};  // N_a / R
+    double hoop = 1.0;
+    for (int a = 0; a < n; ++a) NR[a] = tab.N[q][a] / R, hoop += NR[a] * u[a * d];
+    const double wdV = tab.weight[q] * detJ * outOfPlaneMeasure(material, d, R);
+    std::array<double, d * d> F = displacementGradient<n, d>(u, G);
+    for (int i = 0; i < d; ++i) F[i * d + i] += 1.0;
+    if (!((F[0] * F[3] - F[1] * F[2]) * hoop > 0.0)) return fail<T>(KernelStatus::InvertedCurrent, residual, tangent);
+    const double values[kVars] = {F[0], F[1], F[2], F[3], hoop};
+    std::array<Fad, kVars> v;
+    for (int k = 0; k < kVars; ++k) v[k] = Fad(kVars, k, values[k]);
+    const std::array<Fad, 9> F3 = {v[0], v[1], Fad(0.0), v[2], v[3], Fad(0.0), Fad(0.0), Fad(0.0), v[4]};
+    std::array<Fad, 9> P3;
+    neoHookeanFirstPiola<Fad, 3>(lame.mu, lame.lambda, F3, P3);
+    // The five stresses conjugate to the five entries, and their derivatives.
+    const Fad* P[kVars] = {&P3[0], &P3[1], &P3[3], &P3[4], &P3[8]};
+    // The variation of entry k by the DoF (a, i): in-plane F_iJ by G_aJ, F_tt by N_a / R (i = r).
+    auto dEntry = [&](int k, int a, int i) {
+      if (k == 4) return i == 0 ? NR[a] : 0.0;
+      const int row = k / 2, column = k % 2;
+      return row == i ? G[a * d + column] : 0.0;
+    };
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < d; ++i) {
+        double s = -tab.N[q][a] * b[i];
+        for (int k = 0; k < kVars; ++k) s += P[k]->val() * dEntry(k, a, i);
+        residual[a * d + i] += wdV * s;
+      }
+    if (!tangent) continue;
+    auto& K = *tangent;
+    for (int a = 0; a < n; ++a)
+      for (int i = 0; i < d; ++i)
+        for (int bb = 0; bb < n; ++bb)
+          for (int kk = 0; kk < d; ++kk) {
+            double s = 0.0;
+            for (int k = 0; k < kVars; ++k) {
+              const double left = dEntry(k, a, i);
+              if (left == 0.0) continue;
+              for (int m = 0; m < kVars; ++m) s += left * P[k]->dx(m) * dEntry(m, bb, kk);
+            }
+            K[(a * d + i) * nd + bb * d + kk] += wdV * s;
+          }
+  }
+  return KernelStatus::Ok;
+}
+
 template <mesh::CellType T>
 KernelStatus neoHookean(const MaterialParameters& material, const std::array<double, CellTraits<T>::dofs>& X,
                         const std::array<double, CellTraits<T>::dofs>& u, const std::array<double, CellTraits<T>::dim>& b,
@@ -121,7 +191,7 @@ KernelStatus neoHookean(const MaterialParameters& material, const std::array<dou
   constexpr ReferenceShape S = CellTraits<T>::shape;
   using Fad = Sacado::Fad::SFad<double, d * d>;
   COULOMB_REQUIRE(d == 3 || material.plane == PlaneAssumption::PlaneStrain,
-                  "the neo-Hookean model supports plane strain only in 2D");
+                  "the neo-Hookean model supports plane strain and axisymmetric 2D cells, not plane stress");
   const TabulatedShape<S>& tab = tabulatedShape<S>();
   const LameParameters lame = lameParameters(material);
   const double scale = outOfPlaneMeasure(material, d, 0.0);  // plane strain or 3D: no radius
@@ -192,8 +262,11 @@ KernelStatus cellResidualTangent(const MaterialParameters& material, const std::
                                  std::array<double, CellTraits<T>::dofs * CellTraits<T>::dofs>* tangent) {
   residual.fill(0.0);
   if (tangent) tangent->fill(0.0);
-  if (material.model == MaterialModel::NeoHookean)
+  if (material.model == MaterialModel::NeoHookean) {
+    if constexpr (CellTraits<T>::dim == 2)
+      if (isAxisymmetric(material, 2)) return neoHookeanAxisymmetric<T>(material, X, u, bodyForce, residual, tangent);
     return neoHookean<T>(material, X, u, bodyForce, residual, tangent);
+  }
   return linearElastic<T>(material, X, u, bodyForce, residual, tangent);
 }
 

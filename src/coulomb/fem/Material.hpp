@@ -10,8 +10,7 @@
 /// the radius r >= 0 and y the axis z of a body of revolution (seed's Axisym
 /// conditions), the out-of-plane strain is the hoop strain eps_tt = u_r / r,
 /// the "zz" stress entry the hoop stress sigma_tt, and volume and surface
-/// integrals take 2 pi r (forces and reactions are those of the whole ring;
-/// linear elastic only).
+/// integrals take 2 pi r (forces and reactions are those of the whole ring).
 #include <array>
 #include <cmath>
 

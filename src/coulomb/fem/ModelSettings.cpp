@@ -76,7 +76,7 @@ void addValidModelParameters(ParameterList& valid) {
   ParameterList& problem = valid.sublist("Problem", false, "Modelling assumptions");
   problem.set("Plane Assumption", std::string(kPlaneAssumptions.name(PlaneAssumption::PlaneStrain)),
               "2D meshes: plane strain, plane stress, or axisymmetric (x = radius >= 0, y = axis; forces and "
-              "reactions of the whole ring, stress_zz = hoop stress; linear elastic)",
+              "reactions of the whole ring, stress_zz = hoop stress)",
               kPlaneAssumptions.validator());
 
   ParameterList& functions = valid.sublist("Functions", false, "Piecewise-linear functions of pseudo time, named freely");
@@ -141,8 +141,9 @@ ModelSettings parseModelSettings(const ParameterList& deck, int dimension) {
     p.youngsModulus = m.get<double>("Young's Modulus");
     p.poissonRatio = m.get<double>("Poisson's Ratio");
     p.plane = plane;
-    COULOMB_REQUIRE(!(dimension == 2 && p.plane != PlaneAssumption::PlaneStrain && p.model == MaterialModel::NeoHookean),
-                    "deck: '" << where << "' is Neo-Hookean, which supports only 'Problem/Plane Assumption' = 'Plane Strain'");
+    COULOMB_REQUIRE(!(dimension == 2 && p.plane == PlaneAssumption::PlaneStress && p.model == MaterialModel::NeoHookean),
+                    "deck: '" << where << "' is Neo-Hookean, which supports 'Problem/Plane Assumption' = 'Plane Strain' "
+                                 "or 'Axisymmetric', not 'Plane Stress'");
     COULOMB_REQUIRE(!(dimension == 2 && p.plane == PlaneAssumption::Axisymmetric && block.isParameter("Thickness")),
                     "deck: 'Element Blocks/" << blockName << "/Thickness' has no meaning with 'Problem/Plane Assumption' "
                                                             "= 'Axisymmetric' (the ring is whole)");

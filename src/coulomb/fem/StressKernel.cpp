@@ -42,10 +42,23 @@ KernelStatus cellNodalStress(const MaterialParameters& material, const std::arra
         const double detF = d == 2 ? H[0] * H[3] - H[1] * H[2]
                                    : H[0] * (H[4] * H[8] - H[5] * H[7]) - H[1] * (H[3] * H[8] - H[5] * H[6]) +
                                          H[2] * (H[3] * H[7] - H[4] * H[6]);
-        if (detF > 0.0)
-          sigma = neoHookeanCauchyStress<d>(material, H);
-        else
+        double hoop = 1.0;  // axisymmetric: F_tt = 1 + u_r / R
+        if constexpr (d == 2)
+          if (isAxisymmetric(material, d) && r > 0.0)
+            for (int a = 0; a < n; ++a) hoop += tab.N[q][a] * u[a * d] / r;
+        if (!(detF * hoop > 0.0)) {
           status = KernelStatus::InvertedCurrent;
+        } else if constexpr (d == 2) {
+          if (isAxisymmetric(material, d)) {
+            MaterialParameters solid = material;
+            solid.plane = PlaneAssumption::PlaneStrain;  // the 3D law: no plane assumption left
+            sigma = neoHookeanCauchyStress<3>(solid, {H[0], H[1], 0.0, H[2], H[3], 0.0, 0.0, 0.0, hoop});
+          } else {
+            sigma = neoHookeanCauchyStress<d>(material, H);
+          }
+        } else {
+          sigma = neoHookeanCauchyStress<d>(material, H);
+        }
       }
     }
     if (status != KernelStatus::Ok) {
