@@ -188,24 +188,32 @@ TEST(ContactPatch, ThreeDimensionalNonMatchingTransmitsUniformPressure) {
   EXPECT_NEAR(lastGlobal(run.results, "reaction_top_z"), -sigma, 1e-8 * sigma);
 }
 
+/// The checks of a 2D Hertz run (rank 0; pair `cylinder`, load on `top`):
+/// the contact force balances the load (momentum), the fitted p0 and contact
+/// radius lie within the given fractions of Hertz's at that load (line
+/// contact, or point contact when `sphere`: an axisymmetric section), and
+/// no penetration is left at the active nodes (ALM). Returns the load.
+double expectHertzSection(const ContactRun& run, bool sphere, double p0Tolerance, double aTolerance) {
+  const double load = -lastGlobal(run.results, "reaction_top_y");
+  EXPECT_NEAR(lastGlobal(run.results, "contact_force_cylinder_y"), load, 1e-6 * load);
+  const auto h = compareWithHertz(run, 2, load, sphere);
+  EXPECT_GT(h.active, 10);
+  EXPECT_LT(std::abs(h.p0Fit / h.p0Theory - 1), p0Tolerance) << "p0 fit " << h.p0Fit << " Hertz " << h.p0Theory;
+  EXPECT_LT(std::abs(h.aFit / h.aTheory - 1), aTolerance) << "a fit " << h.aFit << " Hertz " << h.aTheory;
+  const auto& gap = lastNodal(run.results, "contact_gap");
+  const auto& state = lastNodal(run.results, "contact_state");
+  for (std::size_t i = 0; i < gap.size(); ++i)
+    if (state[i] > 0.5) EXPECT_LT(std::abs(gap[i]), 1e-8);
+  return load;
+}
+
 TEST(ContactHertz, TwoDimensionalAgreesWithTheory) {
   ShippedDeck deck("hertz2d", "hertz2d.e");
   deck.fixLinearTolerance();
   auto run = runDeckText("hertz2d_fixed_linear_tolerance", deck.text);
   EXPECT_GE(expectSuperlinearOnceSetIsFixed(run.summary, 1.5), 3);
   if (worldComm()->getRank() != 0) return;
-  const double load = -lastGlobal(run.results, "reaction_top_y");
-  // Momentum: the contact force on the slave balances the load.
-  EXPECT_NEAR(lastGlobal(run.results, "contact_force_cylinder_y"), load, 1e-6 * load);
-  const auto h = compareWithHertz(run, 2, load);
-  EXPECT_GT(h.active, 10);
-  EXPECT_LT(std::abs(h.p0Fit / h.p0Theory - 1), 0.03) << "p0 fit " << h.p0Fit << " Hertz " << h.p0Theory;
-  EXPECT_LT(std::abs(h.aFit / h.aTheory - 1), 0.05) << "a fit " << h.aFit << " Hertz " << h.aTheory;
-  // No penetration left at the active nodes (ALM): |gap| << the approach 0.14.
-  const auto& gap = lastNodal(run.results, "contact_gap");
-  const auto& state = lastNodal(run.results, "contact_state");
-  for (std::size_t i = 0; i < gap.size(); ++i)
-    if (state[i] > 0.5) EXPECT_LT(std::abs(gap[i]), 1e-8);
+  expectHertzSection(run, false, 0.03, 0.05);
 }
 
 // The sphere of hertz3d as an axisymmetric section (exodus_meshes/
@@ -229,18 +237,9 @@ TEST(ContactHertz, AxisymmetricSphereAgreesWithTheory) {
   auto run = runDeckText("hertz_axisymmetric", deck.text);
   EXPECT_EQ(run.summary.cutbacks, 0);
   if (worldComm()->getRank() != 0) return;
-  const double load = -lastGlobal(run.results, "reaction_top_y");
-  EXPECT_NEAR(lastGlobal(run.results, "contact_force_cylinder_y"), load, 1e-6 * load);
+  const double load = expectHertzSection(run, true, 0.03, 0.03);
   EXPECT_GT(load, 1.5e4);
   EXPECT_LT(load, 1.9e4);
-  const auto h = compareWithHertz(run, 2, load, true);
-  EXPECT_GT(h.active, 10);
-  EXPECT_LT(std::abs(h.p0Fit / h.p0Theory - 1), 0.03) << "p0 fit " << h.p0Fit << " Hertz " << h.p0Theory;
-  EXPECT_LT(std::abs(h.aFit / h.aTheory - 1), 0.03) << "a fit " << h.aFit << " Hertz " << h.aTheory;
-  const auto& gap = lastNodal(run.results, "contact_gap");
-  const auto& state = lastNodal(run.results, "contact_state");
-  for (std::size_t i = 0; i < gap.size(); ++i)
-    if (state[i] > 0.5) EXPECT_LT(std::abs(gap[i]), 1e-8);
 }
 
 // An axisymmetric press fit (exodus_meshes/press_fit_axisymmetric.geo): a

@@ -260,6 +260,26 @@ std::array<double, D> nodeAverage(const std::array<double, N>& X, const int* nod
   return c;
 }
 
+/// The largest |K_ik - (r_i(u + h e_k) - r_i(u - h e_k)) / 2h| of a cell's
+/// tangent K at u against central differences of its residual (h = 1e-6).
+template <typename C>
+double tangentDifferenceError(const MaterialParameters& m, const typename C::Vec& X, const typename C::Vec& u,
+                              const typename C::Mat& K) {
+  const double h = 1e-6;
+  const std::array<double, C::dim> b{};
+  double err = 0.0;
+  for (int k = 0; k < C::dofs; ++k) {
+    auto up = u, um = u;
+    up[k] += h;
+    um[k] -= h;
+    typename C::Vec rp, rm;
+    EXPECT_EQ(cellResidualTangent<C::type>(m, X, up, b, rp, nullptr), KernelStatus::Ok);
+    EXPECT_EQ(cellResidualTangent<C::type>(m, X, um, b, rm, nullptr), KernelStatus::Ok);
+    for (int i = 0; i < C::dofs; ++i) err = std::max(err, std::abs(K[i * C::dofs + k] - (rp[i] - rm[i]) / (2 * h)));
+  }
+  return err;
+}
+
 /// How boundaryForcesOfConstantStress integrates sigma n over a face.
 enum class FaceIntegration {
   Traction,  ///< faceTractionForces with t = sigma n, n from the face nodes (planar faces only)
