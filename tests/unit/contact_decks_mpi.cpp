@@ -97,6 +97,23 @@ int expectSuperlinearOnceSetIsFixed(const solver::RunSummary& summary, double mi
 
 }  // namespace
 
+/// The patch tests' contact checks (rank 0, pair `punch`, load on `top`):
+/// `active` nodes in contact, each at the pressure `current` (to 1e-8 of
+/// it), and the contact force and the reaction along `axis` equal to `force`.
+void expectUniformPressure(const ContactRun& run, double current, int active, const std::string& axis, double force) {
+  const auto& pressure = lastNodal(run.results, "contact_pressure");
+  const auto& state = lastNodal(run.results, "contact_state");
+  int found = 0;
+  for (std::size_t i = 0; i < state.size(); ++i)
+    if (state[i] > 0.5) {
+      ++found;
+      EXPECT_NEAR(pressure[i], current, 1e-8 * current);
+    }
+  EXPECT_EQ(found, active);
+  EXPECT_NEAR(lastGlobal(run.results, "contact_force_punch_" + axis), force, 1e-8 * force);
+  EXPECT_NEAR(lastGlobal(run.results, "reaction_top_" + axis), -force, 1e-8 * force);
+}
+
 TEST(ContactPatch, TwoDimensionalNonMatchingTransmitsUniformPressure) {
   auto run = runDeck("contact_patch_2d");
   const double E = 210000, nu = 0.3, delta = 0.01;
@@ -108,17 +125,7 @@ TEST(ContactPatch, TwoDimensionalNonMatchingTransmitsUniformPressure) {
   if (worldComm()->getRank() != 0) return;
   const double sigma = E * delta / (1 - nu * nu);
   const double current = sigma / (1 + nu / (1 - nu) * delta);  // per current length
-  const auto& pressure = lastNodal(run.results, "contact_pressure");
-  const auto& state = lastNodal(run.results, "contact_state");
-  int active = 0;
-  for (std::size_t i = 0; i < state.size(); ++i)
-    if (state[i] > 0.5) {
-      ++active;
-      EXPECT_NEAR(pressure[i], current, 1e-8 * sigma);
-    }
-  EXPECT_EQ(active, 8);  // every node of the 7 slave faces
-  EXPECT_NEAR(lastGlobal(run.results, "contact_force_punch_y"), sigma, 1e-8 * sigma);
-  EXPECT_NEAR(lastGlobal(run.results, "reaction_top_y"), -sigma, 1e-8 * sigma);
+  expectUniformPressure(run, current, 8, "y", sigma);  // every node of the 7 slave faces
 }
 
 // The 2D patch as an axisymmetric section (x = r, the axis at x = 0; issue
@@ -144,17 +151,7 @@ TEST(ContactPatch, AxisymmetricNonMatchingTransmitsUniformPressure) {
   if (worldComm()->getRank() != 0) return;
   const double sigma = E * delta, force = M_PI * sigma;
   const double current = sigma / ((1 + nu * delta) * (1 + nu * delta));
-  const auto& pressure = lastNodal(run.results, "contact_pressure");
-  const auto& state = lastNodal(run.results, "contact_state");
-  int active = 0;
-  for (std::size_t i = 0; i < state.size(); ++i)
-    if (state[i] > 0.5) {
-      ++active;
-      EXPECT_NEAR(pressure[i], current, 1e-8 * sigma);
-    }
-  EXPECT_EQ(active, 8);
-  EXPECT_NEAR(lastGlobal(run.results, "contact_force_punch_y"), force, 1e-8 * force);
-  EXPECT_NEAR(lastGlobal(run.results, "reaction_top_y"), -force, 1e-8 * force);
+  expectUniformPressure(run, current, 8, "y", force);
 }
 
 TEST(ContactPatch, ThreeDimensionalNonMatchingTransmitsUniformPressure) {
@@ -175,17 +172,7 @@ TEST(ContactPatch, ThreeDimensionalNonMatchingTransmitsUniformPressure) {
   if (worldComm()->getRank() != 0) return;
   const double sigma = E * delta;
   const double current = sigma / ((1 + nu * delta) * (1 + nu * delta));
-  const auto& pressure = lastNodal(run.results, "contact_pressure");
-  const auto& state = lastNodal(run.results, "contact_state");
-  int active = 0;
-  for (std::size_t i = 0; i < state.size(); ++i)
-    if (state[i] > 0.5) {
-      ++active;
-      EXPECT_NEAR(pressure[i], current, 1e-8 * sigma);
-    }
-  EXPECT_EQ(active, 25);  // the 5 x 5 slave nodes
-  EXPECT_NEAR(lastGlobal(run.results, "contact_force_punch_z"), sigma, 1e-8 * sigma);
-  EXPECT_NEAR(lastGlobal(run.results, "reaction_top_z"), -sigma, 1e-8 * sigma);
+  expectUniformPressure(run, current, 25, "z", sigma);  // the 5 x 5 slave nodes
 }
 
 /// The checks of a 2D Hertz run (rank 0; pair `cylinder`, load on `top`):
