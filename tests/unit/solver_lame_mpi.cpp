@@ -5,7 +5,8 @@
 //  - QUAD8, QUAD9, TRI6 (order-2 meshes, n = 2, 4, 8, mid-side nodes on the
 //    arcs) and HEX20, HEX27 (a slice of the cylinder, one layer, u_z = 0 on
 //    both faces: plane strain): the L2 displacement error, integrated over
-//    the cells, falls at the rate of quadratic elements, 3.
+//    the cells, falls at the rate of quadratic elements, 3; TET10 on
+//    unstructured slices (n = 4, 8, 16: n = 2 is pre-asymptotic) as well.
 //  - The same cylinder as an axisymmetric section (Plane Assumption =
 //    Axisymmetric, x = r, y = z, u_z = 0 on the bottom and top: the same
 //    plane-strain solution): QUAD4 at rate 2, QUAD8, QUAD9, TRI6 at rate 3
@@ -133,6 +134,7 @@ double solveAndMeasureL2(const std::string& meshFile, const std::string& dir, in
         case CellType::Tri6: addCellError<CellType::Tri6>(block, e, m.coordinates, u, axisymmetric, error2, norm2); break;
         case CellType::Hex20: addCellError<CellType::Hex20>(block, e, m.coordinates, u, axisymmetric, error2, norm2); break;
         case CellType::Hex27: addCellError<CellType::Hex27>(block, e, m.coordinates, u, axisymmetric, error2, norm2); break;
+        case CellType::Tet10: addCellError<CellType::Tet10>(block, e, m.coordinates, u, axisymmetric, error2, norm2); break;
         default: ADD_FAILURE() << "no L2 error for " << mesh::toString(block.cellType);
       }
     }
@@ -190,6 +192,7 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(QuadraticLame{"quarter_annulus2d_quad8", 2, false}, QuadraticLame{"quarter_annulus2d_quad9", 2, false},
                       QuadraticLame{"quarter_annulus2d_tri6", 2, false}, QuadraticLame{"quarter_annulus3d_hex20", 3, false},
                       QuadraticLame{"quarter_annulus3d_hex27", 3, false},
+                      QuadraticLame{"quarter_annulus3d_tet10", 3, false, 4},
                       // (The section is n/2 cells high: n = 2 is one cell, pre-asymptotic for TRI6.)
                       QuadraticLame{"axisymmetric_cylinder_quad8", 2, true, 4},
                       QuadraticLame{"axisymmetric_cylinder_quad9", 2, true, 4},
