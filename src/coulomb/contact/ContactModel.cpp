@@ -27,6 +27,18 @@ ContactModel::ContactModel(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>
     : settings_(settings), dim_(mesh.dimension()), map_(ownedDofMap) {
   for (const auto& pair : settings.pairs)
     pairs_.push_back(std::make_unique<ContactPair>(mesh, ownedDofMap, pair, model, settings.systemForm));
+  // A node on the slave surfaces of two pairs would have its rows replaced
+  // by both pairs' conditions: two multipliers for one node and direction
+  // (issue 18, item 4, not supported yet). Every rank holds every slave node.
+  std::map<long long, std::size_t> slaveOf;
+  for (std::size_t p = 0; p < pairs_.size(); ++p)
+    for (long long node : pairs_[p]->interface().slaveNodes()) {
+      const auto [it, first] = slaveOf.emplace(node, p);
+      COULOMB_REQUIRE(first, "deck: 'Contact/Pairs/" << pairs_[it->second]->settings().name << "' and 'Contact/Pairs/"
+                                                     << pairs_[p]->settings().name << "' share slave node " << node + 1
+                                                     << ": a node can be a slave of one pair only (give it one pair, "
+                                                        "e.g. one pair with both masters in its master side set)");
+    }
   pairSummaries_.resize(pairs_.size());
   if (!saddlePoint()) return;
   // The multiplier block: dim unknowns per slave node of each pair, numbered
