@@ -70,10 +70,8 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
                          const ContactPairSettings& settings, const fem::ModelSettings& model, ContactSystemForm form)
     : mesh_(mesh), dofMap_(ownedDofMap), settings_(settings), dim_(mesh.dimension()) {
   const std::string what = "Contact/Pairs/" + settings.name;
-  bool axisymmetric = false;
-  for (const auto& [block, material] : model.blockMaterials)
-    axisymmetric = axisymmetric || fem::isAxisymmetric(material, mesh.dimension());
-  interface_ = std::make_unique<ContactInterface>(mesh, settings.slave, settings.master, what, axisymmetric);
+  interface_ = std::make_unique<ContactInterface>(mesh, settings.slave, settings.master, what,
+                                                  model.axisymmetric(mesh.dimension()));
   gather_ = std::make_unique<InterfaceGather>(*interface_, ownedDofMap);
   const PenaltyInput penalty = penaltyInput(mesh, *interface_, model);
   const double h = meanFaceDiameter(penalty.slaveFaces);

@@ -59,8 +59,8 @@ KernelStatus linearElastic(const MaterialParameters& material, const std::array<
     // on the radial DoFs (R[a] below; zero otherwise).
     double r = 0.0, hoop = 0.0;
     std::array<double, n> R{};
-    for (int a = 0; a < n; ++a) r += tab.N[q][a] * X[a * d];
     if (axisymmetric) {
+      for (int a = 0; a < n; ++a) r += tab.N[q][a] * X[a * d];
       if (!(r > 0.0)) return fail<T>(KernelStatus::InvertedReference, residual, tangent);
       for (int a = 0; a < n; ++a) R[a] = tab.N[q][a] / r, hoop += R[a] * u[a * d];
     }

@@ -61,6 +61,10 @@ struct ModelSettings {
   std::vector<DirichletCondition> dirichlet;
   std::vector<NeumannCondition> neumann;
   std::vector<BodyForce> bodyForces;
+  /// The blocks are axisymmetric sections ('Problem/Plane Assumption' is one for all blocks).
+  bool axisymmetric(int dimension) const {
+    return !blockMaterials.empty() && isAxisymmetric(blockMaterials.begin()->second, dimension);
+  }
 };
 
 /// @brief Valid parameters of "Materials", "Element Blocks", "Functions",

@@ -82,9 +82,7 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
   if (!meshOverride.empty()) settings_.meshFile = meshOverride;
   auto global = std::make_shared<mesh::GlobalMesh>(io::readExodus(settings_.meshFile, memoryBudget(*comm_)));
   const auto model = fem::parseModelSettings(*deck, global->dimension);
-  const bool axisymmetric = !model.blockMaterials.empty() &&
-                            fem::isAxisymmetric(model.blockMaterials.begin()->second, global->dimension);
-  if (axisymmetric) fem::checkAxisymmetricMesh(*global, settings_.meshFile);
+  if (model.axisymmetric(global->dimension)) fem::checkAxisymmetricMesh(*global, settings_.meshFile);
   mesh_ = std::make_unique<mesh::Mesh>(global, comm_);
   dofs_ = std::make_unique<fem::DofMap>(*mesh_);
   assembler_ = std::make_unique<fem::Assembler>(*mesh_, *dofs_, model);

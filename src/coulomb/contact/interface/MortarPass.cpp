@@ -19,7 +19,6 @@
 
 #include <Teuchos_CommHelpers.hpp>
 #include <algorithm>
-#include <cmath>
 
 #include "coulomb/contact/mortar/MortarSegment2D.hpp"
 #include "coulomb/contact/mortar/MortarSegment3D.hpp"
@@ -214,12 +213,9 @@ double nodalSupportMeasure(const ContactInterface& contact, const InterfaceConfi
   for (int k = offset[slaveNode]; k < offset[slaveNode + 1]; ++k) {
     const ContactFace& f = contact.slaveFaces()[contact.slaveNodeFaces()[k]];
     const int corner = contact.slaveNodeFaceCorners()[k];
-    if (f.type == FaceType::Line2 && contact.axisymmetric()) {
-      // The ring: 2 pi \int N_j r ds = 2 pi L (2 r_j + r_other) / 6.
-      const auto xs = faceCoordinates<FaceType::Line2>(f, x);
-      const double L = std::hypot(xs[1][0] - xs[0][0], xs[1][1] - xs[0][1]);
-      measure += 6.283185307179586 * L * (2.0 * xs[corner][0] + xs[1 - corner][0]) / 6.0;
-    } else if (f.type == FaceType::Line2)
+    if (f.type == FaceType::Line2 && contact.axisymmetric())
+      measure += ringMass<double>(faceCoordinates<FaceType::Line2>(f, x)).De[corner];
+    else if (f.type == FaceType::Line2)
       measure += faceMass<FaceType::Line2, double>(faceCoordinates<FaceType::Line2>(f, x)).De[corner];
     else if (f.type == FaceType::Tri3)
       measure += faceMass<FaceType::Tri3, double>(faceCoordinates<FaceType::Tri3>(f, x)).De[corner];

@@ -82,14 +82,25 @@ bool projectOntoSlave(const std::array<T, 2>& p, const std::array<T, 2>& c, cons
 }  // namespace
 
 template <typename T>
-NodalMatrix<kLine, T> axisymmetricDual(const Line2Nodes<T>& xs) {
-  // D_e M_e^-1 with the common factor L / 12 cancelled: De = 2 (2 r0 + r1, r0 + 2 r1), M = [[a, b], [b, c]].
+FaceMass<kLine, T> ringMass(const Line2Nodes<T>& xs) {
+  using std::sqrt;
   const T r0 = xs[0][0], r1 = xs[1][0];
-  const T a = 3.0 * r0 + r1, b = r0 + r1, c = r0 + 3.0 * r1, det = a * c - b * b;
-  const T d0 = 2.0 * (2.0 * r0 + r1), d1 = 2.0 * (r0 + 2.0 * r1);
-  NodalMatrix<kLine, T> A;
-  A[0] = {T(d0 * c / det), T(-d0 * b / det)};
-  A[1] = {T(-d1 * b / det), T(d1 * a / det)};
+  const T dx = xs[1][0] - xs[0][0], dy = xs[1][1] - xs[0][1];
+  const T scale = kTwoPi * sqrt(dx * dx + dy * dy) / 12.0;
+  FaceMass<kLine, T> mass;
+  mass.De = {T(scale * 2.0 * (2.0 * r0 + r1)), T(scale * 2.0 * (r0 + 2.0 * r1))};
+  mass.Me[0] = {T(scale * (3.0 * r0 + r1)), T(scale * (r0 + r1))};
+  mass.Me[1] = {T(scale * (r0 + r1)), T(scale * (r0 + 3.0 * r1))};
+  return mass;
+}
+
+template <typename T>
+NodalMatrix<kLine, T> axisymmetricDual(const Line2Nodes<T>& xs) {
+  const FaceMass<kLine, T> m = ringMass<T>(xs);
+  const T det = m.Me[0][0] * m.Me[1][1] - m.Me[0][1] * m.Me[1][0];
+  NodalMatrix<kLine, T> A;  // A = D_e M_e^-1 (M_e symmetric)
+  A[0] = {T(m.De[0] * m.Me[1][1] / det), T(-m.De[0] * m.Me[0][1] / det)};
+  A[1] = {T(-m.De[1] * m.Me[1][0] / det), T(m.De[1] * m.Me[0][0] / det)};
   return A;
 }
 
@@ -188,5 +199,6 @@ template MortarSegment2D<double> integrateSegment2D<double>(const Line2Nodes<dou
 template MortarSegment2D<Fad12> integrateSegment2D<Fad12>(const Line2Nodes<Fad12>&, const Line2Nodes<Fad12>&,
                                                           const Line2Nodes<Fad12>&, double, bool);
 template NodalMatrix<kLine, double> axisymmetricDual<double>(const Line2Nodes<double>&);
+template FaceMass<kLine, double> ringMass<double>(const Line2Nodes<double>&);
 
 }  // namespace coulomb::contact

@@ -73,10 +73,14 @@ template <typename T>
 MortarSegment2D<T> integrateSegment2D(const Line2Nodes<T>& xs, const Line2Nodes<T>& ns, const Line2Nodes<T>& xm,
                                       double relativeTolerance = 1e-10, bool axisymmetric = false);
 
-/// @brief Dual coefficients A = D_e M_e^-1 of a Line2 slave face in the ring
-/// measure r ds (r linear between the nodal radii r_0, r_1; the 2 pi cancels):
-/// D_e = L/6 (2 r_0 + r_1, r_0 + 2 r_1), M_e = L/12 [[3 r_0 + r_1, r_0 + r_1],
-/// [r_0 + r_1, r_0 + 3 r_1]]. Equal radii give the plane [[2, -1], [-1, 2]].
+/// @brief D_e and M_e of a Line2 face in the ring measure 2 pi r ds (r linear
+/// between the nodal radii r_0, r_1, L the length): D_e = 2 pi L/6 (2 r_0 + r_1,
+/// r_0 + 2 r_1), M_e = 2 pi L/12 [[3 r_0 + r_1, r_0 + r_1], [r_0 + r_1, r_0 + 3 r_1]].
+template <typename T>
+FaceMass<mesh::FaceType::Line2, T> ringMass(const Line2Nodes<T>& xs);
+
+/// @brief Dual coefficients A = D_e M_e^-1 of ringMass (the ring's dual basis).
+/// Equal radii give the plane [[2, -1], [-1, 2]].
 template <typename T>
 NodalMatrix<mesh::FaceType::Line2, T> axisymmetricDual(const Line2Nodes<T>& xs);
 
@@ -84,6 +88,7 @@ extern template MortarSegment2D<double> integrateSegment2D<double>(const Line2No
                                                                    const Line2Nodes<double>&,
                                                                    const Line2Nodes<double>&, double, bool);
 extern template NodalMatrix<mesh::FaceType::Line2, double> axisymmetricDual<double>(const Line2Nodes<double>&);
+extern template FaceMass<mesh::FaceType::Line2, double> ringMass<double>(const Line2Nodes<double>&);
 
 /// Number of inputs of the 2D kernel: xs (4), ns (4), xm (4).
 inline constexpr int kSegment2DInputs = 12;
