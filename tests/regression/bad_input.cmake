@@ -111,8 +111,8 @@ coulomb_bad_input(axisymmetric_thickness
 coulomb_bad_input(axisymmetric_negative_radius
                   "mesh '.*hertz2d.e': node [0-9]+ has x = -[0-9.e-]+ < 0, but with 'Problem/Plane Assumption' = 'Axisymmetric' x is the radius"
                   NP 1 2)
-coulomb_bad_input(contact_shared_slave_node
-                  "'Contact/Pairs/punch' and 'Contact/Pairs/side' share slave node [0-9]+: a node can be a slave of one pair only" NP 1 2)
+coulomb_bad_input(contact_shared_slave_node_options_differ
+                  "'Contact/Pairs/punch' and 'Contact/Pairs/side' share slave node [0-9]+, so they are solved as one pair, but their 'Friction Law' differ" NP 1 2)
 coulomb_bad_input(contact_friction_tresca_zero_threshold "'Contact/Pairs/punch/Tresca Threshold' must be > 0")
 coulomb_bad_input(contact_friction_unknown_law "'Contact/Pairs/punch/Friction Law'")
 coulomb_bad_input(contact_friction_zero_tangent_factor "'Contact/Pairs/punch/Tangent Factor'")

@@ -42,6 +42,21 @@ struct ContactContributions {
   MultiplierBlock multipliers;  ///< System Form = Saddle Point (then transform etc. stay empty)
 };
 
+/// to += from (every list).
+inline void append(ContactContributions& to, const ContactContributions& from) {
+  auto add = [](auto& a, const auto& b) { a.insert(a.end(), b.begin(), b.end()); };
+  add(to.transform, from.transform);
+  add(to.tangentTransform, from.tangentTransform);
+  add(to.constraint, from.constraint);
+  add(to.constraintResidual, from.constraintResidual);
+  add(to.contactStiffness, from.contactStiffness);
+  add(to.contactResidual, from.contactResidual);
+  add(to.prescribedForce, from.prescribedForce);
+  add(to.multipliers.columns, from.multipliers.columns);
+  add(to.multipliers.rows, from.multipliers.rows);
+  add(to.multipliers.residual, from.multipliers.residual);
+}
+
 /// @brief Per-update figures of one pair, summed over ranks.
 struct PairIterationSummary {
   ActiveSetSummary activeSet;

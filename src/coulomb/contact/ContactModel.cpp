@@ -4,6 +4,7 @@
 #include <cmath>
 #include <iomanip>
 #include <map>
+#include <numeric>
 #include <sstream>
 #include <unordered_map>
 
@@ -13,6 +14,8 @@
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "coulomb/contact/PairChaining.hpp"
+#include "coulomb/contact/PairMerging.hpp"
 #include "coulomb/core/Error.hpp"
 #include "coulomb/core/Parallel.hpp"
 
@@ -25,22 +28,14 @@ const char* const kComponents[] = {"x", "y", "z"};
 ContactModel::ContactModel(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& ownedDofMap,
                            const ContactSettings& settings, const fem::ModelSettings& model)
     : settings_(settings), dim_(mesh.dimension()), map_(ownedDofMap) {
-  for (const auto& pair : settings.pairs)
+  // Pairs sharing slave nodes become one pair (PairMerging.hpp).
+  for (const auto& pair : mergePairsSharingSlaveNodes(mesh, settings.pairs))
     pairs_.push_back(std::make_unique<ContactPair>(mesh, ownedDofMap, pair, model, settings.systemForm));
-  // A node on the slave surfaces of two pairs would have its rows replaced
-  // by both pairs' conditions: two multipliers for one node and direction
-  // (issue 18, item 4, not supported yet). Every rank holds every slave node.
-  std::map<long long, std::size_t> slaveOf;
-  for (std::size_t p = 0; p < pairs_.size(); ++p)
-    for (long long node : pairs_[p]->interface().slaveNodes()) {
-      const auto [it, first] = slaveOf.emplace(node, p);
-      COULOMB_REQUIRE(first, "deck: 'Contact/Pairs/" << pairs_[it->second]->settings().name << "' and 'Contact/Pairs/"
-                                                     << pairs_[p]->settings().name << "' share slave node " << node + 1
-                                                     << ": a node can be a slave of one pair only (give it one pair, "
-                                                        "e.g. one pair with both masters in its master side set)");
-    }
   pairSummaries_.resize(pairs_.size());
-  if (!saddlePoint()) return;
+  if (!saddlePoint()) {
+    chaining_ = std::make_unique<PairChaining>(pairs_);
+    return;
+  }
   // The multiplier block: dim unknowns per slave node of each pair, numbered
   // after the displacements, owned by the slave node's owner.
   const auto owned = ownedDofMap->getNodeElementList();
@@ -96,7 +91,9 @@ void ContactModel::updatePairs(bool freezeSet, UpdatePair&& updatePair) {
   contributions_ = ContactContributions();
   summary_ = ContactIterationSummary();
   PairIterationSummary total;
-  for (std::size_t p = 0; p < pairs_.size(); ++p) {
+  std::vector<std::size_t> order(pairs_.size());
+  std::iota(order.begin(), order.end(), 0);
+  for (std::size_t p : chaining_ ? chaining_->order() : order) {
     // Simplified semi-smooth Newton: the set moves at the predictor and the first iterate only.
     const bool updateSet =
         !freezeSet && (pairs_[p]->settings().semiSmooth == SemiSmoothNewton::Full || updatesInStep_ < 2);
@@ -133,7 +130,14 @@ void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool free
   static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact update");
   Teuchos::TimeMonitor scope(*timer);
   updatePairs(freezeSet, [&](std::size_t p, bool updateSet) {
-    return pairs_[p]->update(u, bulkResidual, updateSet, contributions_);
+    if (!chaining_->chained(p)) return pairs_[p]->update(u, bulkResidual, updateSet, contributions_);
+    // Slave nodes that are master nodes of earlier pairs (PairChaining.hpp).
+    ContactContributions taken = chaining_->take(p, contributions_, *map_);
+    ContactContributions mine;
+    const auto summary = pairs_[p]->update(u, *PairChaining::residualFor(bulkResidual, taken), updateSet, mine);
+    PairChaining::restore(std::move(taken), mine, *map_);
+    append(contributions_, mine);
+    return summary;
   });
   const bool local = !contributions_.transform.empty() || !contributions_.tangentTransform.empty() || !contributions_.contactStiffness.empty() ||
                      !contributions_.constraint.empty() || !contributions_.contactResidual.empty() ||

@@ -15,6 +15,7 @@
 
 #include "coulomb/contact/ActiveSetCycle.hpp"
 #include "coulomb/contact/ContactPair.hpp"
+#include "coulomb/contact/PairChaining.hpp"
 #include "coulomb/contact/ContactSettings.hpp"
 #include "coulomb/core/TpetraTypes.hpp"
 
@@ -64,7 +65,9 @@ struct ContactIterationSummary {
 
 class ContactModel {
 public:
-  /// Collective; throws coulomb::Error naming the pair on bad sets.
+  /// Collective; throws coulomb::Error naming the pair on bad sets. Pairs
+  /// whose slave surfaces share nodes are joined into one pair named "a+b"
+  /// (PairMerging.hpp): pairs() and the output name that one.
   ContactModel(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& ownedDofMap, const ContactSettings& settings,
                const fem::ModelSettings& model);
   ~ContactModel();
@@ -168,6 +171,9 @@ private:
   void updatePairs(bool freezeSet, UpdatePair&& updatePair);
 
   ContactSettings settings_;
+  /// The order of the condensed updates and the rows of slave nodes that
+  /// are other pairs' master nodes (null in the saddle-point form).
+  std::unique_ptr<PairChaining> chaining_;
   Teuchos::RCP<const Map> saddlePointMap_;
   int dim_;
   Teuchos::RCP<const Map> map_;

@@ -113,6 +113,12 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
     integrateCurrentConfiguration();
   }
   beginStep(1);
+  if (!settings.mergedFrom.empty()) {
+    std::string names;
+    for (const auto& name : settings.mergedFrom) names += (names.empty() ? "'" : ", '") + name + "'";
+    notes_.push_back("pairs " + names + " share slave nodes: they are solved as one pair '" + settings.name +
+                     "' (one multiplier per node and direction)");
+  }
 }
 
 ContactPair::~ContactPair() = default;

@@ -48,8 +48,13 @@ enum class ContactSystemForm { Condensed, SaddlePoint };
 /// @brief One contact pair.
 struct ContactPairSettings {
   std::string name;    ///< the deck sublist name (messages, output variable names)
-  std::string slave;   ///< slave side set (the finer / curved side)
-  std::string master;  ///< master side set
+  /// Slave side set (the finer / curved side) and master side set; each may
+  /// list several sets separated by commas (ContactInterface).
+  std::string slave;
+  std::string master;
+  /// The deck pairs joined into this one because their slave surfaces share
+  /// nodes (PairMerging.hpp); empty for a pair as the deck gave it.
+  std::vector<std::string> mergedFrom;
   ContactFormulation formulation = ContactFormulation::ALM;
   double penalty = 0.0;        ///< eps_n [force/length^3]; 0: automatic, penaltyFactor × min(E_slave, E_master) / h (ContactPair.cpp)
   double penaltyFactor = 1.0;  ///< factor of the automatic penalty

@@ -139,6 +139,27 @@ Teuchos::RCP<CrsMatrix> matrixFromTriplets(const std::vector<MatrixTriplet>& tri
   return matrix;
 }
 
+std::vector<MatrixTriplet> onRowOwners(const std::vector<MatrixTriplet>& triplets, const Map& map) {
+  RoutedTriplets routed = routeToOwners(triplets, map);
+  std::vector<MatrixTriplet> here;
+  for (std::size_t i = 0; i < triplets.size(); ++i)
+    if (routed.localRow[i] != RowLookup::invalid()) here.push_back(triplets[i]);
+  here.insert(here.end(), routed.received.begin(), routed.received.end());
+  return here;
+}
+
+std::vector<VectorEntry> onRowOwners(const std::vector<VectorEntry>& entries, const Map& map) {
+  RowLookup local(map);
+  std::vector<VectorEntry> here;
+  std::vector<double> away;
+  for (const auto& e : entries)
+    if (local(e.row) != RowLookup::invalid()) here.push_back(e);
+    else away.insert(away.end(), {static_cast<double>(e.row), e.value});
+  const auto records = toOwners(away, 2, map);
+  for (std::size_t i = 0; i < records.size(); i += 2) here.push_back({static_cast<GlobalOrdinal>(records[i]), records[i + 1]});
+  return here;
+}
+
 void addEntries(const std::vector<VectorEntry>& entries, Vector& owned) {
   const auto& map = *owned.getMap();
   RowLookup local(map);

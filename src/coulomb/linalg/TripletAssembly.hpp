@@ -110,4 +110,11 @@ private:
 /// @brief Collective: adds every rank's `entries` into `owned` (on its map).
 void addEntries(const std::vector<VectorEntry>& entries, Vector& owned);
 
+/// @brief Collective: every rank's `triplets` (rows in `map`) moved to the
+/// owners of their rows: returns this rank's own ones followed by those the
+/// other ranks hold for rows it owns.
+std::vector<MatrixTriplet> onRowOwners(const std::vector<MatrixTriplet>& triplets, const Map& map);
+/// @brief onRowOwners for vector entries.
+std::vector<VectorEntry> onRowOwners(const std::vector<VectorEntry>& entries, const Map& map);
+
 }  // namespace coulomb::linalg

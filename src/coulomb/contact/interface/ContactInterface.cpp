@@ -19,53 +19,93 @@
 namespace coulomb::contact {
 namespace {
 
-/// Faces of one side set, duplicates (same element and side) removed.
-std::vector<ContactFace> collectFaces(const mesh::Mesh& mesh, const mesh::SideSet& set, const std::string& shown,
-                                      const std::string& role, const std::string& what,
-                                      const fem::NodeElementAdjacency& adjacency) {
+/// The side-set names of a deck value: one name, or several separated by
+/// commas (blanks around a name are dropped).
+std::vector<std::string> splitSetList(const std::string& list) {
+  std::vector<std::string> names;
+  std::size_t begin = 0;
+  while (begin <= list.size()) {
+    const std::size_t end = std::min(list.find(',', begin), list.size());
+    std::string name = list.substr(begin, end - begin);
+    const std::size_t first = name.find_first_not_of(" \t");
+    name = first == std::string::npos ? std::string() : name.substr(first, name.find_last_not_of(" \t") - first + 1);
+    names.push_back(name);
+    begin = end + 1;
+  }
+  return names;
+}
+
+/// The side sets named by a deck value (splitSetList), as mesh indices, and
+/// their display names joined by ", ".
+struct SetList {
+  std::vector<std::size_t> indices;
+  std::string shown;
+};
+
+SetList resolveSets(const mesh::Mesh& mesh, const std::string& list, const std::string& role, const std::string& what) {
+  SetList sets;
+  for (const std::string& name : splitSetList(list)) {
+    COULOMB_REQUIRE(!name.empty(), what << ": the " << role << " side set list '" << list << "' has an empty name");
+    const std::size_t index = mesh.sideSetIndex(name, what + " (" + role + " side set)");
+    if (std::find(sets.indices.begin(), sets.indices.end(), index) != sets.indices.end()) continue;
+    const mesh::SideSet& set = mesh.global().sideSets[index];
+    sets.indices.push_back(index);
+    sets.shown += (sets.shown.empty() ? "" : ", ") + mesh::displayName(set.name, "sideset", set.id);
+  }
+  return sets;
+}
+
+/// Faces of the side sets `sets` (one surface), duplicates (same element
+/// and side) removed.
+std::vector<ContactFace> collectFaces(const mesh::Mesh& mesh, const SetList& sets, const std::string& role,
+                                      const std::string& what, const fem::NodeElementAdjacency& adjacency) {
   const mesh::GlobalMesh& global = mesh.global();
   std::vector<ContactFace> faces;
   std::set<std::pair<long long, int>> seen;
-  for (std::size_t i = 0; i < set.elements.size(); ++i) {
-    ContactFace face;
-    face.element = set.elements[i];
-    face.side = set.sides[i];
-    COULOMB_REQUIRE(face.element >= 0 && face.element < global.numElements(),
-                    what << ": " << role << " side set '" << shown << "' refers to element " << face.element + 1
-                         << ", which the mesh does not have (it has " << global.numElements() << ")");
-    if (!seen.insert({face.element, face.side}).second) continue;
-    const std::size_t b = mesh.blockOfElement(face.element);
-    const mesh::ElementBlock& block = global.blocks[b];
-    std::array<int, mesh::kMaxFaceNodes> local{};
-    try {
-      face.type = fem::faceType(block.cellType, face.side);
-      face.numNodes = fem::faceLocalNodes(block.cellType, face.side, local);
-    } catch (const Error& e) {
-      throw Error(what + ": " + role + " side set '" + shown + "', element " + std::to_string(face.element + 1) +
-                  ": " + e.what());
+  for (std::size_t index : sets.indices) {
+    const mesh::SideSet& set = global.sideSets[index];
+    const std::string shown = mesh::displayName(set.name, "sideset", set.id);
+    for (std::size_t i = 0; i < set.elements.size(); ++i) {
+      ContactFace face;
+      face.element = set.elements[i];
+      face.side = set.sides[i];
+      COULOMB_REQUIRE(face.element >= 0 && face.element < global.numElements(),
+                      what << ": " << role << " side set '" << shown << "' refers to element " << face.element + 1
+                           << ", which the mesh does not have (it has " << global.numElements() << ")");
+      if (!seen.insert({face.element, face.side}).second) continue;
+      const std::size_t b = mesh.blockOfElement(face.element);
+      const mesh::ElementBlock& block = global.blocks[b];
+      std::array<int, mesh::kMaxFaceNodes> local{};
+      try {
+        face.type = fem::faceType(block.cellType, face.side);
+        face.numNodes = fem::faceLocalNodes(block.cellType, face.side, local);
+      } catch (const Error& e) {
+        throw Error(what + ": " + role + " side set '" + shown + "', element " + std::to_string(face.element + 1) +
+                    ": " + e.what());
+      }
+      // The dual mortar basis, the segments and the nodal normals are built
+      // for linear faces; quadratic faces need their own dual basis (a later
+      // step), so a pair refuses them rather than treating them as linear.
+      COULOMB_REQUIRE(!mesh::isQuadratic(face.type),
+                      what << ": " << role << " side set '" << shown << "' is on element block '"
+                           << mesh::displayName(block.name, "block", block.id) << "' of "
+                           << mesh::toString(block.cellType) << " cells: contact on quadratic faces ("
+                           << mesh::toString(face.type) << ") is not supported yet");
+      // A face with an element on its other side is inside a body (a merged
+      // interface, or a set drawn through a body): it can never touch anything.
+      const long long across = fem::elementAcrossFace(global, adjacency, face.element, face.side);
+      COULOMB_REQUIRE(across < 0, what << ": " << role << " side set '" << shown << "': side " << face.side + 1
+                                       << " of element " << face.element + 1 << " is inside a body (element " << across + 1
+                                       << " is on its other side); a contact surface must be on the boundary (are the "
+                                          "two bodies' nodes merged?)");
+      const int perElement = mesh::numNodes(block.cellType);
+      const long long offset = (face.element - block.firstElement) * perElement;
+      for (int a = 0; a < face.numNodes; ++a) face.nodes[a] = block.connectivity[offset + local[a]];
+      face.owner = mesh.elementOwner(face.element);
+      faces.push_back(face);
     }
-    // The dual mortar basis, the segments and the nodal normals are built
-    // for linear faces; quadratic faces need their own dual basis (a later
-    // step), so a pair refuses them rather than treating them as linear.
-    COULOMB_REQUIRE(!mesh::isQuadratic(face.type),
-                    what << ": " << role << " side set '" << shown << "' is on element block '"
-                         << mesh::displayName(block.name, "block", block.id) << "' of "
-                         << mesh::toString(block.cellType) << " cells: contact on quadratic faces ("
-                         << mesh::toString(face.type) << ") is not supported yet");
-    // A face with an element on its other side is inside a body (a merged
-    // interface, or a set drawn through a body): it can never touch anything.
-    const long long across = fem::elementAcrossFace(global, adjacency, face.element, face.side);
-    COULOMB_REQUIRE(across < 0, what << ": " << role << " side set '" << shown << "': side " << face.side + 1
-                                     << " of element " << face.element + 1 << " is inside a body (element " << across + 1
-                                     << " is on its other side); a contact surface must be on the boundary (are the "
-                                        "two bodies' nodes merged?)");
-    const int perElement = mesh::numNodes(block.cellType);
-    const long long offset = (face.element - block.firstElement) * perElement;
-    for (int a = 0; a < face.numNodes; ++a) face.nodes[a] = block.connectivity[offset + local[a]];
-    face.owner = mesh.elementOwner(face.element);
-    faces.push_back(face);
   }
-  COULOMB_REQUIRE(!faces.empty(), what << ": " << role << " side set '" << shown << "' is empty");
+  COULOMB_REQUIRE(!faces.empty(), what << ": " << role << " side set '" << sets.shown << "' is empty");
   return faces;
 }
 
@@ -91,19 +131,19 @@ ContactInterface::ContactInterface(const mesh::Mesh& mesh, const std::string& sl
                                    const std::string& masterSet, const std::string& what, bool axisymmetric)
     : dimension_(mesh.dimension()), axisymmetric_(axisymmetric && mesh.dimension() == 2), comm_(mesh.comm()) {
   const mesh::GlobalMesh& global = mesh.global();
-  const std::size_t slaveIndex = mesh.sideSetIndex(slaveSet, what + " (slave side set)");
-  const std::size_t masterIndex = mesh.sideSetIndex(masterSet, what + " (master side set)");
-  const mesh::SideSet& slave = global.sideSets[slaveIndex];
-  const mesh::SideSet& master = global.sideSets[masterIndex];
-  slaveName_ = mesh::displayName(slave.name, "sideset", slave.id);
-  masterName_ = mesh::displayName(master.name, "sideset", master.id);
-  COULOMB_REQUIRE(slaveIndex != masterIndex, what << ": slave side set '" << slaveSet << "' and master side set '"
-                                                  << masterSet << "' are the same set ('" << slaveName_
-                                                  << "'); contact needs two different surfaces");
+  const SetList slave = resolveSets(mesh, slaveSet, "slave", what);
+  const SetList master = resolveSets(mesh, masterSet, "master", what);
+  slaveName_ = slave.shown;
+  masterName_ = master.shown;
+  for (std::size_t index : slave.indices)
+    COULOMB_REQUIRE(std::find(master.indices.begin(), master.indices.end(), index) == master.indices.end(),
+                    what << ": the slave and the master side sets name the same set '"
+                         << mesh::displayName(global.sideSets[index].name, "sideset", global.sideSets[index].id)
+                         << "'; contact needs two different surfaces");
 
   const auto adjacency = fem::nodeElementAdjacency(global);
-  slaveFaces_ = collectFaces(mesh, slave, slaveName_, "slave", what, adjacency);
-  masterFaces_ = collectFaces(mesh, master, masterName_, "master", what, adjacency);
+  slaveFaces_ = collectFaces(mesh, slave, "slave", what, adjacency);
+  masterFaces_ = collectFaces(mesh, master, "master", what, adjacency);
   {
     std::set<std::pair<long long, int>> slaveSides;
     for (const ContactFace& f : slaveFaces_) slaveSides.insert({f.element, f.side});

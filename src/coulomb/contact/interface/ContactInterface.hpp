@@ -44,10 +44,12 @@ struct ContactFace {
 class ContactInterface {
 public:
   /// @brief Collects the faces of side sets `slaveSet` and `masterSet`
-  /// (Exodus names or sideset_<id> aliases). `what` names the deck entry
-  /// asking (e.g. "Contact/punch"), for error messages.
+  /// (Exodus names or sideset_<id> aliases; each one set, or several
+  /// separated by commas, which then make one surface: e.g. a master made
+  /// of two bodies' tops, "left_top, right_top"). `what` names the deck
+  /// entry asking (e.g. "Contact/punch"), for error messages.
   /// @throws coulomb::Error naming the set when it is unknown, empty, when
-  /// slave and master are the same set, or when a face is in both sets.
+  /// a set is both slave and master, or when a face is in both surfaces.
   /// Not collective (every rank detects the same errors).
   /// `axisymmetric` (2D): the faces are rings (x = r), the mortar integrals
   /// take 2 pi r (MortarPass).
@@ -57,6 +59,7 @@ public:
   int dimension() const { return dimension_; }
   bool axisymmetric() const { return axisymmetric_; }
   const Teuchos::RCP<const Teuchos::Comm<int>>& comm() const { return comm_; }
+  /// The slave side sets' display names, joined by ", ".
   const std::string& slaveSetName() const { return slaveName_; }
 
   /// All slave / master faces (identical on every rank), in side-set order

@@ -1,0 +1,177 @@
+// Assemblies of several bodies (issue 18, item 4): a body in two contact
+// pairs (three stacked blocks, the middle one master above and slave below,
+// or slave on both sides), and a punch on two neighbouring blocks (one slave
+// surface on two master bodies, as one pair with a master list or as one
+// pair per block, which share a slave node and are joined). Every case has a
+// uniform exact state that dual mortar reproduces on non-matching meshes, so
+// the displacements, the pressures and the forces are checked to round-off.
+// np = 1, 2, 3 (ctest MpiTests.np*).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+#include "ContactTestSupport.hpp"
+#include "TestSupport.hpp"
+
+namespace coulomb::test {
+namespace {
+
+struct Pair {
+  std::string name, slave, master;
+};
+
+/// A frictionless steel deck (E = 210000, nu = 0.3, plane strain) on a
+/// shipped 2D mesh: `blocks` all steel, u_y = 0 on `bottom`, u_y = -delta on
+/// `top` in 2 steps, u_x = 0 on each of `fixedX`, and the pairs.
+std::string assemblyDeck(const std::string& mesh, const std::vector<std::string>& blocks,
+                         const std::vector<std::string>& fixedX, double delta, const std::vector<Pair>& pairs) {
+  std::ostringstream d;
+  d << "<ParameterList name=\"Coulomb\"><ParameterList name=\"Mesh\"><Parameter name=\"File\" type=\"string\" value=\""
+    << shippedMesh(mesh) << "\"/></ParameterList>"
+    << "<ParameterList name=\"Materials\"><ParameterList name=\"steel\">"
+       "<Parameter name=\"Young's Modulus\" type=\"double\" value=\"210000\"/>"
+       "<Parameter name=\"Poisson's Ratio\" type=\"double\" value=\"0.3\"/></ParameterList></ParameterList>"
+       "<ParameterList name=\"Element Blocks\">";
+  for (const auto& block : blocks)
+    d << "<ParameterList name=\"" << block << "\"><Parameter name=\"Material\" type=\"string\" value=\"steel\"/></ParameterList>";
+  d << "</ParameterList><ParameterList name=\"Dirichlet Conditions\">" << dirichletXml("bottom", "bottom", "y", 0.0)
+    << dirichletXml("top", "top", "y", -delta);
+  for (const auto& set : fixedX) d << dirichletXml(set, set, "x", 0.0);
+  d << "</ParameterList><ParameterList name=\"Contact\"><ParameterList name=\"Pairs\">";
+  for (const auto& p : pairs)
+    d << "<ParameterList name=\"" << p.name << "\"><Parameter name=\"Slave\" type=\"string\" value=\"" << p.slave
+      << "\"/><Parameter name=\"Master\" type=\"string\" value=\"" << p.master << "\"/></ParameterList>";
+  d << "</ParameterList></ParameterList><ParameterList name=\"Load Stepping\">"
+       "<Parameter name=\"Number of Steps\" type=\"int\" value=\"2\"/></ParameterList></ParameterList>";
+  return d.str();
+}
+
+/// Largest |u - (a X, -delta Y / H)| over every node of every rank.
+double linearFieldError(const ContactRun& run, double a, double delta, double H) {
+  double error = 0;
+  forOwnedNodes(*run.simulation, [&](long long, const double* X, const double* u) {
+    error = std::max({error, std::abs(u[0] - a * X[0]), std::abs(u[1] + delta * X[1] / H)});
+  });
+  return globalMax(error);
+}
+
+/// Every active slave node of the run carries one of the pressures
+/// `expected` (to 1e-8 of it; the nearest one). Returns the number of nodes
+/// at each, in the order of `expected`.
+std::vector<int> countPressures(const ContactRun& run, const std::vector<double>& expected) {
+  std::vector<int> count(expected.size(), 0);
+  const auto& p = lastNodal(run.results, "contact_pressure");
+  const auto& state = lastNodal(run.results, "contact_state");
+  for (std::size_t i = 0; i < state.size(); ++i) {
+    if (state[i] < 0.5) continue;
+    std::size_t nearest = 0;
+    for (std::size_t k = 1; k < expected.size(); ++k)
+      if (std::abs(p[i] - expected[k]) < std::abs(p[i] - expected[nearest])) nearest = k;
+    ++count[nearest];
+    EXPECT_NEAR(p[i], expected[nearest], 1e-8 * expected[nearest]) << "node " << i + 1;
+  }
+  return count;
+}
+
+// Three blocks of heights 0.5 stacked (H = 1.5), pressed by delta, free to
+// expand sideways: the uniaxial stress sigma = E delta / ((1 - nu^2) H)
+// everywhere (plane strain), u_x = nu / (1 - nu) delta x / H. Both
+// interfaces carry sigma; the middle block is in both pairs, first master
+// of the upper pair and slave of the lower, then slave of both.
+TEST(ContactManyBodies, StackedBlocksTransmitTheUniformStressThroughBothInterfaces) {
+  const double E = 210000, nu = 0.3, delta = 0.01, H = 1.5;
+  const double sigma = E * delta / ((1 - nu * nu) * H);
+  const double a = nu / (1 - nu) * delta / H;
+  const std::vector<std::string> blocks{"bottom_block", "middle_block", "top_block"};
+  for (const bool middleSlaveAbove : {false, true}) {
+    SCOPED_TRACE(middleSlaveAbove ? "middle block slave of both pairs" : "middle block master above, slave below");
+    const Pair upper = middleSlaveAbove ? Pair{"upper", "middle_block_top", "top_block_bottom"}
+                                        : Pair{"upper", "top_block_bottom", "middle_block_top"};
+    const Pair lower{"lower", "middle_block_bottom", "bottom_block_top"};
+    auto run = runDeckText(middleSlaveAbove ? "stacked_slave_both" : "stacked",
+                           assemblyDeck("stacked_blocks2d.e", blocks, {"left"}, delta, {upper, lower}));
+    EXPECT_LT(linearFieldError(run, a, delta, H), 1e-9 * delta);
+    if (worldComm()->getRank() != 0) continue;
+    // Per current length: the interfaces stretch by 1 + a.
+    // Every slave node: 8 on the middle block's faces (7 elements) of each
+    // pair it is the slave of, 6 on the top block's (5).
+    EXPECT_EQ(countPressures(run, {sigma / (1 + a)}), std::vector<int>{middleSlaveAbove ? 16 : 14});
+    // The force on each pair's slave body: up when the slave is above.
+    EXPECT_NEAR(lastGlobal(run.results, "contact_force_upper_y"), middleSlaveAbove ? -sigma : sigma, 1e-8 * sigma);
+    EXPECT_NEAR(lastGlobal(run.results, "contact_force_lower_y"), sigma, 1e-8 * sigma);
+    EXPECT_NEAR(lastGlobal(run.results, "reaction_top_y"), -sigma, 1e-8 * sigma);
+    EXPECT_NEAR(lastGlobal(run.results, "reaction_bottom_y"), sigma, 1e-8 * sigma);
+  }
+}
+
+// A punch [0,2] x [0.5,1] on two blocks [0,1] and [1,2] x [0,0.5] that touch
+// at x = 1, everything held at x = 0 and x = 2, pressed by delta (H = 1):
+// uniaxial strain, u_x = 0, u_y = -delta y; sigma_yy = E (1 - nu) delta /
+// ((1 + nu)(1 - 2 nu)) under the punch and sigma_xx = nu / (1 - nu) sigma_yy
+// between the blocks (the pair `bases`, whose slave corner at (1, 0.5) is a
+// master node of the punch's pair). The punch's slave surface lies on two
+// master bodies: one pair with a master list, or one pair per block, which
+// share the punch's node at x = 1 and are joined into "left+right".
+TEST(ContactManyBodies, PunchOnTwoBlocksTransmitsTheUniformStrainState) {
+  const double E = 210000, nu = 0.3, delta = 0.01;
+  const double sigmaY = E * (1 - nu) * delta / ((1 + nu) * (1 - 2 * nu));
+  const double sigmaX = nu / (1 - nu) * sigmaY;
+  const std::vector<std::string> blocks{"left_base", "right_base", "punch"};
+  const Pair bases{"bases", "left_base_right", "right_base_left"};
+  for (const bool perBlock : {false, true}) {
+    SCOPED_TRACE(perBlock ? "one pair per block, joined" : "one pair with a master list");
+    const std::vector<Pair> pairs =
+        perBlock ? std::vector<Pair>{{"left", "punch_bottom_left", "left_base_top"},
+                                     {"right", "punch_bottom_right", "right_base_top"},
+                                     bases}
+                 : std::vector<Pair>{{"punch", "punch_bottom", "left_base_top, right_base_top"}, bases};
+    auto run = runDeckText(perBlock ? "punch_per_block" : "punch_master_list",
+                           assemblyDeck("punch_two_blocks2d.e", blocks, {"left", "right"}, delta, pairs));
+    EXPECT_LT(linearFieldError(run, 0.0, delta, 1.0), 1e-9 * delta);
+    if (worldComm()->getRank() != 0) continue;
+    const std::string punch = perBlock ? "left+right" : "punch";
+    // The blocks' interface shortens by 1 - delta: its pressure per current length.
+    // Every slave node: the punch's 8 (7 faces), the left block's side 3 (2).
+    EXPECT_EQ(countPressures(run, {sigmaY, sigmaX / (1 - delta)}), (std::vector<int>{8, 3}));
+    EXPECT_NEAR(lastGlobal(run.results, "contact_force_" + punch + "_y"), 2 * sigmaY, 1e-8 * sigmaY);
+    EXPECT_NEAR(lastGlobal(run.results, "contact_force_bases_x"), -0.5 * sigmaX, 1e-8 * sigmaX);
+    EXPECT_NEAR(lastGlobal(run.results, "reaction_top_y"), -2 * sigmaY, 1e-8 * sigmaY);
+    EXPECT_NEAR(lastGlobal(run.results, "reaction_bottom_y"), 2 * sigmaY, 1e-8 * sigmaY);
+    EXPECT_NEAR(lastGlobal(run.results, "reaction_left_x") + lastGlobal(run.results, "reaction_right_x"), 0.0,
+                1e-8 * sigmaY);
+  }
+}
+
+// The punch of the last test tilted (top u_y = -delta - 0.004 x): the
+// left block's corner (1, 0.5), a slave node of `bases`, is a master node of
+// the punch's pair, whose force there now has a part along the normal of
+// `bases`. The condensed form takes it into that node's conditions
+// (PairChaining.hpp; without it Newton does not converge); the saddle-point
+// form, whose multipliers are unknowns, needs nothing of the kind: the two
+// agree to solver tolerance.
+TEST(ContactManyBodies, SlaveNodeThatIsAnotherPairsMasterNodeMatchesTheSaddlePointForm) {
+  const std::vector<std::string> blocks{"left_base", "right_base", "punch"};
+  const std::vector<Pair> pairs{{"punch", "punch_bottom", "left_base_top, right_base_top"},
+                                {"bases", "left_base_right", "right_base_left"}};
+  std::string deck = assemblyDeck("punch_two_blocks2d.e", blocks, {"left", "right"}, 0.01, pairs);
+  const std::string top = dirichletXml("top", "top", "y", -0.01);
+  const auto at = deck.find(top);
+  ASSERT_NE(at, std::string::npos);
+  deck.replace(at, top.size(), dirichletXml("top", "top", "y", -0.01, {-0.004, 0.0}));
+  auto condensed = runDeckText("punch_tilted", deck);
+  const std::string contact = "<ParameterList name=\"Contact\">";
+  deck.replace(deck.find(contact), contact.size(),
+               contact + "<Parameter name=\"System Form\" type=\"string\" value=\"Saddle Point\"/>");
+  auto saddle = runDeckText("punch_tilted_saddle_point", deck);
+  EXPECT_LE(condensed.summary.newtonIterations, 6);
+  if (worldComm()->getRank() != 0) return;
+  for (const char* field : {"displacement_x", "displacement_y", "contact_pressure"})
+    EXPECT_LT(nodalDifference(condensed.results, saddle.results, field), 1e-8) << field;
+  EXPECT_NEAR(lastGlobal(condensed.results, "contact_force_bases_x"), lastGlobal(saddle.results, "contact_force_bases_x"),
+              1e-8 * std::abs(lastGlobal(saddle.results, "contact_force_bases_x")));
+}
+
+}  // namespace
+}  // namespace coulomb::test
