@@ -113,6 +113,8 @@ coulomb_bad_input(axisymmetric_negative_radius
                   NP 1 2)
 coulomb_bad_input(contact_shared_slave_node_options_differ
                   "'Contact/Pairs/punch' and 'Contact/Pairs/side' share slave node [0-9]+, so they are solved as one pair, but their 'Friction Law' differ" NP 1 2)
+coulomb_bad_input(contact_pair_chain_cycle
+                  "Contact/Pairs/(punch|side) and Contact/Pairs/(punch|side): each has slave nodes that are master nodes of the other.*Penalty" NP 1 2)
 coulomb_bad_input(contact_friction_tresca_zero_threshold "'Contact/Pairs/punch/Tresca Threshold' must be > 0")
 coulomb_bad_input(contact_friction_unknown_law "'Contact/Pairs/punch/Friction Law'")
 coulomb_bad_input(contact_friction_zero_tangent_factor "'Contact/Pairs/punch/Tangent Factor'")
