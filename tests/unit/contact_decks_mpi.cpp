@@ -203,6 +203,16 @@ TEST(ContactHertz, TwoDimensionalAgreesWithTheory) {
   expectHertzSection(run, false, 0.03, 0.05);
 }
 
+// The same cylinder with QUAD9 cells (hertz2d.geo at order 2, 10952 DoFs):
+// curved LINE3 contact faces with the quadratic dual basis (issue 18, item 2).
+TEST(ContactHertz, QuadraticTwoDimensionalAgreesWithTheory) {
+  ShippedDeck deck("hertz2d", "hertz2d.e");
+  deck.replace(shippedMesh("hertz2d.e"), shippedMesh("hertz2d_quad9.e"));
+  auto run = runDeckText("hertz2d_quad9", deck.text);
+  if (worldComm()->getRank() != 0) return;
+  expectHertzSection(run, false, 0.03, 0.05);
+}
+
 // The sphere of hertz3d as an axisymmetric section (exodus_meshes/
 // hertz_axisymmetric.geo: a round-tipped cylinder r <= 4 on a disc, h = 0.05
 // at the contact, 1486 DoFs), top moved -0.1 as in xml/hertz3d.xml: the

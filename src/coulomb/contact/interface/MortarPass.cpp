@@ -21,6 +21,7 @@
 #include <algorithm>
 
 #include "coulomb/contact/mortar/MortarSegment2D.hpp"
+#include "coulomb/contact/mortar/MortarSegmentCurved2D.hpp"
 #include "coulomb/contact/mortar/MortarSegment3D.hpp"
 #include "coulomb/core/Error.hpp"
 #include "coulomb/core/Parallel.hpp"
@@ -159,6 +160,25 @@ void pair2D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
   }
 }
 
+/// A 2D pair with a quadratic Line3 face (MortarSegmentCurved2D.hpp).
+template <FaceType S, FaceType Mf>
+void curvedPair2D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
+  const auto xs = faceCoordinates<S>(s, p.x);
+  const auto ns = faceNormals<S>(s, p.contact, p.normals);
+  const auto xm = faceCoordinates<Mf>(m, p.x);
+  const bool ring = p.contact.axisymmetric();
+  if (p.withDerivatives && integrateCurvedSegment2D<S, Mf, double>(xs, ns, xm, p.tolerance, ring).contributes) {
+    const auto lin = linearizeCurvedSegment2D<S, Mf>(xs, ns, xm, p.tolerance, ring);
+    if (!lin.value.contributes) return;
+    const InputChain chain = buildChain(2, s, m, p.contact, p.normals);
+    accumulate(lin.value, &lin, &chain, s, m, p.out);
+  } else if (!p.withDerivatives) {
+    const auto value = integrateCurvedSegment2D<S, Mf, double>(xs, ns, xm, p.tolerance, ring);
+    if (!value.contributes) return;
+    accumulate(value, static_cast<const MortarSegmentCurved2DLinearization<S, Mf>*>(nullptr), nullptr, s, m, p.out);
+  }
+}
+
 template <FaceType S, FaceType Mf>
 void pair3D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
   const auto xs = faceCoordinates<S>(s, p.x);
@@ -177,7 +197,13 @@ void pair3D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
 }
 
 void integratePair(const PairContext& p, const ContactFace& s, const ContactFace& m) {
-  if (p.contact.dimension() == 2) return pair2D(p, s, m);
+  if (p.contact.dimension() == 2) {
+    const bool sQuadratic = s.type == FaceType::Line3, mQuadratic = m.type == FaceType::Line3;
+    if (sQuadratic && mQuadratic) return curvedPair2D<FaceType::Line3, FaceType::Line3>(p, s, m);
+    if (sQuadratic) return curvedPair2D<FaceType::Line3, FaceType::Line2>(p, s, m);
+    if (mQuadratic) return curvedPair2D<FaceType::Line2, FaceType::Line3>(p, s, m);
+    return pair2D(p, s, m);
+  }
   const bool sTri = s.type == FaceType::Tri3, mTri = m.type == FaceType::Tri3;
   if (sTri && mTri) return pair3D<FaceType::Tri3, FaceType::Tri3>(p, s, m);
   if (sTri) return pair3D<FaceType::Tri3, FaceType::Quad4>(p, s, m);
@@ -213,7 +239,9 @@ double nodalSupportMeasure(const ContactInterface& contact, const InterfaceConfi
   for (int k = offset[slaveNode]; k < offset[slaveNode + 1]; ++k) {
     const ContactFace& f = contact.slaveFaces()[contact.slaveNodeFaces()[k]];
     const int corner = contact.slaveNodeFaceCorners()[k];
-    if (f.type == FaceType::Line2 && contact.axisymmetric())
+    if (f.type == FaceType::Line3)
+      measure += lineMass<FaceType::Line3, double>(faceCoordinates<FaceType::Line3>(f, x), contact.axisymmetric()).De[corner];
+    else if (f.type == FaceType::Line2 && contact.axisymmetric())
       measure += ringMass<double>(faceCoordinates<FaceType::Line2>(f, x)).De[corner];
     else if (f.type == FaceType::Line2)
       measure += faceMass<FaceType::Line2, double>(faceCoordinates<FaceType::Line2>(f, x)).De[corner];

@@ -113,6 +113,16 @@ FaceNodes<F, T> faceCornerNormals(const FaceNodes<F, T>& x) {
     // edge a -> b has outward normal (dy, -dx) (fem/FaceTopology.hpp)
     const std::array<T, 2> v{T(x[1][1] - x[0][1]), T(x[0][0] - x[1][0])};
     m[0] = m[1] = unit(v);
+  } else if constexpr (F == FaceType::Line3) {
+    // the tangent dx/dxi at the node (xi = -1, 1, 0), turned like Line2's edge
+    static constexpr double kNodeXi[3] = {-1.0, 1.0, 0.0};
+    for (int a = 0; a < 3; ++a) {
+      const auto g = faceShapeGradients<F, double>(FacePoint<F, double>{kNodeXi[a]});
+      std::array<T, 2> t{T(0.0), T(0.0)};
+      for (int b = 0; b < 3; ++b)
+        for (int i = 0; i < 2; ++i) t[i] += g[b][0] * x[b][i];
+      m[a] = unit(std::array<T, 2>{t[1], T(-t[0])});
+    }
   } else if constexpr (F == FaceType::Tri3) {
     m[0] = m[1] = m[2] = unit(cross(difference(x[1], x[0]), difference(x[2], x[0])));
   } else {
@@ -133,14 +143,15 @@ NodalNormal averagedNormal(int dimension, const std::vector<FaceAtNode>& faces, 
   std::vector<NormalDerivative> ds;
   try {
     for (const FaceAtNode& face : faces) {
-      COULOMB_CHECK((face.type == FaceType::Line2) == (dimension == 2),
+      COULOMB_CHECK((face.type == FaceType::Line2 || face.type == FaceType::Line3) == (dimension == 2),
                       "face type does not match dimension " << dimension);
       std::vector<NormalDerivative>* target = withDerivative ? &ds : nullptr;
       switch (face.type) {
         case FaceType::Line2: addFace<FaceType::Line2>(face, s, target); break;
+        case FaceType::Line3: addFace<FaceType::Line3>(face, s, target); break;
         case FaceType::Tri3: addFace<FaceType::Tri3>(face, s, target); break;
         case FaceType::Quad4: addFace<FaceType::Quad4>(face, s, target); break;
-        default: throw InternalError("a quadratic face in the nodal normals (ContactInterface splits them)");
+        default: throw InternalError("a quadratic 3D face in the nodal normals (ContactInterface refuses them)");
       }
     }
   } catch (const Error& e) {
@@ -220,6 +231,7 @@ std::vector<NodalNormal> computeNodalNormals(const ContactInterface& contact, co
   template FaceNodes<F, Sacado::Fad::SFad<double, N>> faceCornerNormals<F, Sacado::Fad::SFad<double, N>>(        \
       const FaceNodes<F, Sacado::Fad::SFad<double, N>>&);
 COULOMB_CONTACT_NORMALS_INSTANTIATE(FaceType::Line2, 4)
+COULOMB_CONTACT_NORMALS_INSTANTIATE(FaceType::Line3, 6)
 COULOMB_CONTACT_NORMALS_INSTANTIATE(FaceType::Tri3, 9)
 COULOMB_CONTACT_NORMALS_INSTANTIATE(FaceType::Quad4, 12)
 #undef COULOMB_CONTACT_NORMALS_INSTANTIATE

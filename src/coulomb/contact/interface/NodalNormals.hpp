@@ -8,6 +8,9 @@
 ///   n_j = s_j / |s_j|,   s_j = sum over the slave faces f containing j of m_f(j),
 /// where m_f(j) is the unit outward normal of face f at its corner j:
 ///   Line2 (2D): (dy, -dx)/len, d = x_1 - x_0 (the same at both nodes);
+///   Line3 (2D): the same with d = dx/dxi of the quadratic edge at the node
+///          (xi = -1, 1, 0): a mid-side node has one face, a corner the
+///          tangents of its two faces at their ends;
 ///   Tri3: (x_1 - x_0) × (x_2 - x_0) normalised (the same at all corners);
 ///   Quad4: x_xi × x_eta of the bilinear face at the corner, normalised, i.e.
 ///          (x_next - x_a) × (x_prev - x_a) at corner a (next/prev in face order).
@@ -26,7 +29,7 @@
 /// sparse list over the nodes of all faces around j.
 ///
 /// Scalars: faceCornerNormals is explicitly instantiated for double and for
-/// Sacado::Fad::SFad<double, dim × nodes> (4 Line2, 9 Tri3, 12 Quad4); only the
+/// Sacado::Fad::SFad<double, dim × nodes> (4 Line2, 6 Line3, 9 Tri3, 12 Quad4); only the
 /// double versions are declared here (no Sacado in headers).
 #include <array>
 #include <vector>
@@ -44,6 +47,8 @@ FaceNodes<F, T> faceCornerNormals(const FaceNodes<F, T>& x);
 
 extern template FaceNodes<mesh::FaceType::Line2, double> faceCornerNormals<mesh::FaceType::Line2, double>(
     const FaceNodes<mesh::FaceType::Line2, double>&);
+extern template FaceNodes<mesh::FaceType::Line3, double> faceCornerNormals<mesh::FaceType::Line3, double>(
+    const FaceNodes<mesh::FaceType::Line3, double>&);
 extern template FaceNodes<mesh::FaceType::Tri3, double> faceCornerNormals<mesh::FaceType::Tri3, double>(
     const FaceNodes<mesh::FaceType::Tri3, double>&);
 extern template FaceNodes<mesh::FaceType::Quad4, double> faceCornerNormals<mesh::FaceType::Quad4, double>(

@@ -35,7 +35,7 @@ std::array<std::array<T, FaceTraits<F>::spaceDim>, FaceTraits<F>::paramDim> tang
 template <mesh::FaceType F, typename T>
 T measureFromTangents(const std::array<std::array<T, FaceTraits<F>::spaceDim>, FaceTraits<F>::paramDim>& t) {
   using std::sqrt;
-  if constexpr (F == mesh::FaceType::Line2) {
+  if constexpr (FaceTraits<F>::paramDim == 1) {
     return sqrt(t[0][0] * t[0][0] + t[0][1] * t[0][1]);
   } else {
     const T c0 = t[0][1] * t[1][2] - t[0][2] * t[1][1];
@@ -52,7 +52,8 @@ template <mesh::FaceType F>
 struct MassRule {
   static constexpr int n = FaceTraits<F>::nodes;
   static constexpr int pd = FaceTraits<F>::paramDim;
-  static constexpr int points = F == mesh::FaceType::Line2 ? 2 : F == mesh::FaceType::Tri3 ? 3 : 9;
+  static constexpr int points = F == mesh::FaceType::Line2 ? 2 : F == mesh::FaceType::Line3 ? 5
+                                 : F == mesh::FaceType::Tri3  ? 3 : 9;
   std::array<double, points> weight{};
   std::array<NodalValues<F, double>, points> N{};
   std::array<std::array<std::array<double, pd>, n>, points> dN{};
@@ -61,7 +62,19 @@ struct MassRule {
 template <mesh::FaceType F>
 MassRule<F> makeMassRule() {
   MassRule<F> rule;
-  if constexpr (F == mesh::FaceType::Quad4) {
+  if constexpr (F == mesh::FaceType::Line3) {
+    const double a = std::sqrt(5.0 - 2.0 * std::sqrt(10.0 / 7.0)) / 3.0;
+    const double b = std::sqrt(5.0 + 2.0 * std::sqrt(10.0 / 7.0)) / 3.0;
+    const double wa = (322.0 + 13.0 * std::sqrt(70.0)) / 900.0, wb = (322.0 - 13.0 * std::sqrt(70.0)) / 900.0;
+    const double gx[5] = {-b, -a, 0.0, a, b};
+    const double gw[5] = {wb, wa, 128.0 / 225.0, wa, wb};
+    for (int q = 0; q < 5; ++q) {
+      const FacePoint<F, double> xi{gx[q]};
+      rule.weight[q] = gw[q];
+      rule.N[q] = faceShapeValues<F, double>(xi);
+      rule.dN[q] = faceShapeGradients<F, double>(xi);
+    }
+  } else if constexpr (F == mesh::FaceType::Quad4) {
     const double g = std::sqrt(0.6);
     const double gx[3] = {-g, 0.0, g};
     const double gw[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};

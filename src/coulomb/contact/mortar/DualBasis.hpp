@@ -5,6 +5,9 @@
 ///
 /// Reference faces (same node order as fem/ShapeFunctions.hpp, Exodus):
 ///   Line2 on [-1,1]            nodes -1, +1
+///   Line3 on [-1,1]            nodes -1, +1, 0 (quadratic Lagrange; its dual
+///                              basis keeps D_j = int N_j > 0: h/6, h/6, 2h/3
+///                              on a straight face)
 ///   Tri3  on the unit simplex   (0,0) (1,0) (0,1)
 ///   Quad4 on [-1,1]^2           (-1,-1) (1,-1) (1,1) (-1,1)
 ///
@@ -20,7 +23,8 @@
 /// diagonal, -1 off it); for a Quad4 it depends on the coordinates unless the face
 /// is a parallelogram.
 ///
-/// Integration: Line2 2-point Gauss, Tri3 the 3-point degree-2 rule (both from
+/// Integration: Line2 2-point Gauss, Line3 5-point Gauss (exact on a straight
+/// face, an approximation on a curved one, whose measure is not polynomial), Tri3 the 3-point degree-2 rule (both from
 /// fem/Quadrature, exact); Quad4 3x3 Gauss: exact for plane quadrilaterals
 /// (integrand N_j N_k det J of degree <= 3 per variable), an approximation for
 /// warped ones (|x_xi × x_eta| is then not polynomial; biorthogonality then holds
@@ -40,9 +44,10 @@ namespace coulomb::contact {
 /// @brief Compile-time sizes of a face: nodes, parametric and spatial dimension.
 template <mesh::FaceType F>
 struct FaceTraits {
+  static constexpr bool line = F == mesh::FaceType::Line2 || F == mesh::FaceType::Line3;
   static constexpr int nodes = mesh::numNodes(F);
-  static constexpr int paramDim = F == mesh::FaceType::Line2 ? 1 : 2;
-  static constexpr int spaceDim = F == mesh::FaceType::Line2 ? 2 : 3;
+  static constexpr int paramDim = line ? 1 : 2;
+  static constexpr int spaceDim = line ? 2 : 3;
 };
 
 /// Nodal coordinates (or nodal vectors such as normals): x[a][i].
@@ -63,6 +68,8 @@ template <mesh::FaceType F, typename X>
 inline NodalValues<F, X> faceShapeValues(const FacePoint<F, X>& xi) {
   if constexpr (F == mesh::FaceType::Line2) {
     return {X(0.5 * (1.0 - xi[0])), X(0.5 * (1.0 + xi[0]))};
+  } else if constexpr (F == mesh::FaceType::Line3) {
+    return {X(0.5 * xi[0] * (xi[0] - 1.0)), X(0.5 * xi[0] * (xi[0] + 1.0)), X(1.0 - xi[0] * xi[0])};
   } else if constexpr (F == mesh::FaceType::Tri3) {
     return {X(1.0 - xi[0] - xi[1]), xi[0], xi[1]};
   } else {
@@ -78,6 +85,8 @@ inline std::array<std::array<X, FaceTraits<F>::paramDim>, FaceTraits<F>::nodes> 
   if constexpr (F == mesh::FaceType::Line2) {
     (void)xi;
     return {{{X(-0.5)}, {X(0.5)}}};
+  } else if constexpr (F == mesh::FaceType::Line3) {
+    return {{{X(xi[0] - 0.5)}, {X(xi[0] + 0.5)}, {X(-2.0 * xi[0])}}};
   } else if constexpr (F == mesh::FaceType::Tri3) {
     (void)xi;
     return {{{X(-1.0), X(-1.0)}, {X(1.0), X(0.0)}, {X(0.0), X(1.0)}}};
@@ -140,6 +149,7 @@ NodalMatrix<F, T> dualCoefficients(const FaceNodes<F, T>& x);
   extern template FaceMass<F, double> faceMass<F, double>(const FaceNodes<F, double>&);           \
   extern template NodalMatrix<F, double> dualCoefficients<F, double>(const FaceNodes<F, double>&);
 COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Line2)
+COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Line3)
 COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Tri3)
 COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Quad4)
 #undef COULOMB_CONTACT_DUAL_EXTERN

@@ -1,0 +1,54 @@
+// Contact on quadratic faces (issue 18, item 2): the 2D patch test with
+// QUAD9 and QUAD8 cells, whose LINE3 contact faces take the standard
+// quadratic dual basis (MortarSegmentCurved2D.hpp). np = 1, 2, 3.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "ContactTestSupport.hpp"
+#include "TestSupport.hpp"
+
+namespace coulomb::test {
+namespace {
+
+// xml/contact_patch_2d.xml on its meshes of order 2 (non-matching: 4 and 7
+// elements along the interface): the uniform state sigma_yy = -E delta / (1 -
+// nu^2), u_y = -delta y, u_x = nu / (1 - nu) delta x, which quadratic cells
+// represent exactly, to round-off, with every one of the 15 slave nodes
+// (corners and mid-side nodes alike) at the same pressure. Linear
+// multipliers on the LINE3 faces (tried first) gave 925 and 3696 at corners
+// and mid-side nodes against 2308: the dual basis must be quadratic.
+TEST(ContactPatch, QuadraticLine3FacesTransmitUniformPressure) {
+  const double E = 210000, nu = 0.3, delta = 0.01;
+  const double sigma = E * delta / (1 - nu * nu);
+  const double current = sigma / (1 + nu / (1 - nu) * delta);  // per current length
+  for (const std::string cells : {"quad9", "quad8"}) {
+    SCOPED_TRACE(cells);
+    ShippedDeck deck("contact_patch_2d", "contact_patch2d.e");
+    deck.replace(shippedMesh("contact_patch2d.e"), shippedMesh("contact_patch2d_" + cells + ".e"));
+    deck.fixLinearTolerance();  // every Krylov solve to 1e-10: a check to round-off
+    auto run = runDeckText("contact_patch_2d_" + cells, deck.text);
+    double error = 0;
+    forOwnedNodes(*run.simulation, [&](long long, const double* X, const double* u) {
+      error = std::max({error, std::abs(u[1] + delta * X[1]), std::abs(u[0] - nu / (1 - nu) * delta * X[0])});
+    });
+    EXPECT_LT(globalMax(error), 1e-9 * delta);
+    EXPECT_LE(run.summary.newtonIterations, 4);
+    if (worldComm()->getRank() != 0) continue;
+    const auto& pressure = lastNodal(run.results, "contact_pressure");
+    const auto& state = lastNodal(run.results, "contact_state");
+    int active = 0;
+    for (std::size_t i = 0; i < state.size(); ++i)
+      if (state[i] > 0.5) {
+        ++active;
+        EXPECT_NEAR(pressure[i], current, 1e-8 * current) << "node " << i + 1;
+      }
+    EXPECT_EQ(active, 15);  // 7 LINE3 faces
+    EXPECT_NEAR(lastGlobal(run.results, "contact_force_punch_y"), sigma, 1e-8 * sigma);
+    EXPECT_NEAR(lastGlobal(run.results, "reaction_top_y"), -sigma, 1e-8 * sigma);
+  }
+}
+
+}  // namespace
+}  // namespace coulomb::test
