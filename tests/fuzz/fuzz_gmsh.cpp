@@ -1,5 +1,6 @@
-// libFuzzer harness: the gmsh .msh (format 2.2) reader that
-// coulomb_gmsh2exo uses to convert meshes.
+// libFuzzer harness: the gmsh .msh reader that coulomb_gmsh2exo uses to
+// convert meshes (gmsh's own library reads the file, any version, ASCII or
+// binary; then Coulomb's conversion of its physical groups).
 #include <cstddef>
 #include <cstdint>
 

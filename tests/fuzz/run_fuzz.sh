@@ -4,7 +4,8 @@
 #
 #   tests/fuzz/run_fuzz.sh [--build DIR] [--runs N] [--jobs J] [HARNESS...]
 #     --build  the fuzz build folder (default build-fuzz)
-#     --runs   executions per harness (default 1000000; ctest's smoke run: 2000)
+#     --runs   executions per harness (default 1000000; ctest's smoke run: 2000;
+#              0: only replay the corpus and the past findings, as ctest does for gmsh)
 #     HARNESS  deck exodus gmsh (default: all three)
 #
 # First every minimised input in tests/fuzz/regressions/<harness>/ (past
@@ -35,12 +36,16 @@ seed() {  # seed <harness> <corpus dir>
     exodus)
       find "$here/xml" "$here/exodus_meshes" -name '*.e' -size -64k -exec cp -t "$corpus" {} + ;;
     gmsh)
-      local geo
+      # Every format gmsh reads for us: 2.2 and 4.1, ASCII and binary; and order 2.
+      local geo format
       for geo in block2d block2d_tri contact_patch2d block3d_tet friction_punch; do
         local d=2
         grep -q 'Volume' "$here/exodus_meshes/$geo.geo" && d=3
-        gmsh -$d -format msh22 -setnumber n 2 -o "$corpus/$geo.msh" "$here/exodus_meshes/$geo.geo" >/dev/null 2>&1 ||
-          echo "run_fuzz.sh: gmsh could not mesh $geo.geo (seed skipped)" >&2
+        for format in "msh22" "msh41" "msh41 -bin" "msh41 -order 2"; do
+          # shellcheck disable=SC2086  # $format is several gmsh arguments
+          gmsh -$d -format $format -setnumber n 2 -o "$corpus/$geo.${format// /_}.msh" "$here/exodus_meshes/$geo.geo" \
+            >/dev/null 2>&1 || echo "run_fuzz.sh: gmsh could not mesh $geo.geo ($format; seed skipped)" >&2
+        done
       done ;;
   esac
 }

@@ -1,8 +1,11 @@
 // Tests of the gmsh -> Exodus conversion (readGmsh + ExodusWriter, the code
 // behind coulomb_gmsh2exo). A hand-written .msh checks node renumbering,
-// cell flipping and side matching exactly without needing gmsh; the .geo
-// files of exodus_meshes/ are then meshed with gmsh (skipped, visibly, when
-// gmsh is not installed) and checked geometrically: every named set holds
+// cell flipping and side matching exactly without needing the gmsh program;
+// damaged files must be errors naming the file, with nothing printed; one
+// mesh written as msh 2.2, 4.1 and 4.1 binary must convert to the same
+// GlobalMesh. The .geo files of exodus_meshes/ are then meshed with gmsh
+// (skipped, visibly, when gmsh is not installed), written in gmsh's default
+// format (4.1), and checked geometrically: every named set holds
 // exactly the nodes on its face, side sets' nodes (through the exodus
 // library's own side numbering) equal the node set of the same name, side
 // normals point outwards, and all cells have positive measure summing to
@@ -16,10 +19,12 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "coulomb/core/Error.hpp"
@@ -173,9 +178,6 @@ TEST(GmshIo, HandWrittenTwoSquares) {
 TEST(GmshIo, Errors) {
   expectErrorContaining([] { coulomb::io::readGmsh(outputPath("missing.msh")); }, {outputPath("missing.msh")});
 
-  const std::string v4 = writeText("v4.msh", "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");
-  expectErrorContaining([&] { coulomb::io::readGmsh(v4); }, {v4, "4.1", "msh22"});
-
   std::string text = kTwoSquares;  // the diagonal 1-3 as a "boundary" line
   text.replace(text.find("5 1 2 3 2 5 6"), 13, "5 1 2 3 2 1 3");
   const std::string diagonal = writeText("diagonal.msh", text);
@@ -185,12 +187,58 @@ TEST(GmshIo, Errors) {
   text.replace(text.find("7\n1 15"), 6, "8\n1 15");
   text.replace(text.find("7 3 2 1 1 2 3 6 5"), 17, "7 2 2 1 1 2 5 6\n8 2 2 1 1 2 6 3");
   const std::string mixed = writeText("mixed.msh", text);
-  expectErrorContaining([&] { coulomb::io::readGmsh(mixed); }, {mixed, "'body'", "triangle"});
+  // gmsh's names of the types
+  expectErrorContaining([&] { coulomb::io::readGmsh(mixed); }, {mixed, "'body'", "Quadrilateral 4", "Triangle 3"});
 
-  text = kTwoSquares;  // a second-order triangle in "body"
-  text.replace(text.find("7 3 2 1 1 2 3 6 5"), 17, "7 9 2 1 1 2 5 6 1 2 3");
-  const std::string quadratic = writeText("quadratic.msh", text);
-  expectErrorContaining([&] { coulomb::io::readGmsh(quadratic); }, {quadratic, "6-node triangle"});
+  text = kTwoSquares;  // both squares as third-order quadrangles, which Coulomb has not
+  text.replace(text.find("6 3 2 1 1 1 2 3 4"), 17, "6 36 2 1 1 1 2 3 4 1 2 3 4 1 2 3 4 1 2 3 4");
+  text.replace(text.find("7 3 2 1 1 2 3 6 5"), 17, "7 36 2 1 1 2 3 6 5 2 3 6 5 2 3 6 5 2 3 6 5");
+  const std::string cubic = writeText("cubic.msh", text);
+  expectErrorContaining([&] { coulomb::io::readGmsh(cubic); }, {cubic, "'body'", "Quadrilateral 16", "supported"});
+
+  text = kTwoSquares;  // the body in the plane z = 1
+  for (const char* line : {"1 0 0 0\n", "2 1 0 0\n", "3 1 1 0\n", "4 0 1 0\n", "5 2 0 0\n", "6 2 1 0\n"}) {
+    std::string moved = line;
+    moved.replace(moved.size() - 2, 1, "1");
+    text.replace(text.find(line), moved.size(), moved);
+  }
+  const std::string lifted = writeText("lifted.msh", text);
+  expectErrorContaining([&] { coulomb::io::readGmsh(lifted); }, {lifted, "z = 0"});
+}
+
+// Files that are no mesh, or damaged ones: a coulomb::Error naming the file,
+// nothing on stdout (gmsh's messages go to its logger), and the next file
+// reads (gmsh 4.8 stays locked after an error unless it is started afresh).
+TEST(GmshIo, DamagedFilesAreErrorsNamingTheFile) {
+  std::vector<std::pair<std::string, std::string>> files = {  // name, content
+      {"garbage.msh", "this is no mesh\n"},
+      {"script.msh", "Point(1) = {0, 0, 0};\n"},  // a .geo script: never given to gmsh's parser
+      {"empty.msh", ""},
+      {"bad_format.msh", "$MeshFormat\nnot a version\n$EndMeshFormat\n"},
+      {"truncated22.msh", std::string(kTwoSquares).substr(0, std::string(kTwoSquares).find("3 1 1 0"))},
+      {"bad_node_line.msh", std::string(kTwoSquares).replace(std::string(kTwoSquares).find("2 1 0 0"), 7, "2 x y z")}};
+  // Meshes of gmsh's own, cut in half: 4.1 ASCII and binary.
+  if (std::system("gmsh --version > /dev/null 2>&1") == 0) {
+    for (const std::string format : {"", "-bin"}) {
+      const std::string whole = outputPath("whole" + format + ".msh");
+      const std::string command = "gmsh -2 -v 0 " + format + " -setnumber n 4 -o " + whole + " " +
+                                  std::string(COULOMB_SOURCE_DIR) + "/exodus_meshes/block2d.geo > /dev/null 2>&1";
+      ASSERT_EQ(std::system(command.c_str()), 0) << command;
+      std::ifstream in(whole, std::ios::binary);
+      const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+      files.push_back({"half" + format + ".msh", bytes.substr(0, bytes.size() / 2)});
+    }
+  }
+  const std::string good = writeText("good.msh", kTwoSquares);
+  for (const auto& [name, content] : files) {
+    SCOPED_TRACE(name);
+    std::string path = outputPath(name);
+    std::ofstream(path, std::ios::binary) << content;
+    testing::internal::CaptureStdout();
+    expectErrorContaining([&] { coulomb::io::readGmsh(path); }, {path});
+    EXPECT_EQ(coulomb::io::readGmsh(good).numElements(), 2);
+    EXPECT_EQ(testing::internal::GetCapturedStdout(), "");
+  }
 }
 
 // Found by tests/fuzz (fuzz_gmsh; input tests/fuzz/regressions/gmsh/):
@@ -213,14 +261,26 @@ TEST(GmshIo, ConverterToolReportsErrorsOnOneLine) {
   const GlobalMesh m = coulomb::io::readExodus(out);
   EXPECT_EQ(m.numNodes(), 6);
   EXPECT_EQ(m.numElements(), 2);
+  // A missing file, one gmsh cannot read (cut inside $Nodes) and one gmsh
+  // crashes on: exit 1, one line on stderr naming the file, nothing on stdout.
   const std::string missing = outputPath("no_such_input.msh");
-  const int status = std::system((tool + " " + missing + " " + out + " > /dev/null 2> " + log).c_str());
-  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << "status " << status;
-  std::ifstream err(log);
-  std::string line, extra;
-  ASSERT_TRUE(std::getline(err, line));
-  EXPECT_NE(line.find(missing), std::string::npos) << line;
-  EXPECT_FALSE(std::getline(err, extra)) << "more than one line on stderr: " << extra;
+  const std::string squares = kTwoSquares;
+  const std::string cut = writeText("tool_cut.msh", squares.substr(0, squares.find("3 1 1 0")));
+  const std::string crash = std::string(COULOMB_SOURCE_DIR) + "/tests/fuzz/gmsh_crashes/physical_name_unterminated.msh";
+  for (const std::string& bad : {missing, cut, crash}) {
+    std::filesystem::remove(out);
+    SCOPED_TRACE(bad);
+    const std::string stdoutLog = outputPath("tool_stdout.txt");
+    const int status = std::system((tool + " " + bad + " " + out + " > " + stdoutLog + " 2> " + log).c_str());
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << "status " << status;
+    std::ifstream err(log);
+    std::string line, extra;
+    ASSERT_TRUE(std::getline(err, line));
+    EXPECT_NE(line.find(bad), std::string::npos) << line;
+    EXPECT_FALSE(std::getline(err, extra)) << "more than one line on stderr: " << extra;
+    EXPECT_EQ(std::filesystem::file_size(stdoutLog), 0u);
+    EXPECT_FALSE(std::filesystem::exists(out));
+  }
 }
 
 namespace {
@@ -246,7 +306,7 @@ void checkGeo(const GeoCase& c) {
   const std::string stem = std::filesystem::path(c.geo).stem().string() + "_" + coulomb::mesh::toString(c.type);
   const std::string msh = outputPath(stem + ".msh"), exo = outputPath(stem + ".e");
   std::filesystem::remove(msh);
-  const std::string command = "gmsh -" + std::to_string(c.dim) + " -format msh22 -v 1 -setnumber n " +
+  const std::string command = "gmsh -" + std::to_string(c.dim) + " -v 1 -setnumber n " +
                               std::to_string(c.n) + " " + c.gmshOptions + " -o " + msh + " " + std::string(COULOMB_SOURCE_DIR) +
                               "/exodus_meshes/" + c.geo + " > " + outputPath(stem + ".gmsh.log") + " 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0) << command;
@@ -421,4 +481,123 @@ TEST(GmshIo, QuarterAnnulusQuad9) {
              {"symmetry_x", [](const Vec& p) { return near(p[0], 0); }},
              {"symmetry_y", [](const Vec& p) { return near(p[1], 0); }}},
             kOrder2, false});
+}
+
+namespace {
+
+// Two bodies side by side, one of triangles and one of quadrangles, an
+// interior curve, a physical point (a node set of its own).
+const char* kTwoBodies2d = R"(// dim: 2
+n = 3;
+Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {2, 0, 0};
+Point(4) = {2, 1, 0}; Point(5) = {1, 1, 0}; Point(6) = {0, 1, 0};
+Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 5};
+Line(5) = {5, 6}; Line(6) = {6, 1}; Line(7) = {2, 5};
+Curve Loop(1) = {1, 7, 5, 6}; Plane Surface(1) = {1};
+Curve Loop(2) = {2, 3, 4, -7}; Plane Surface(2) = {2};
+Transfinite Curve{:} = n + 1;
+Transfinite Surface{2}; Recombine Surface{2};
+Physical Surface("tris", 1) = {1};
+Physical Surface("quads", 2) = {2};
+Physical Curve("bottom", 3) = {1, 2};
+Physical Curve("interface", 4) = {7};
+Physical Point("origin", 5) = {1};
+)";
+
+// Two unstructured boxes sharing a face; a physical curve and point (node sets).
+const char* kTwoBoxes3d = R"(SetFactory("OpenCASCADE");
+Box(1) = {0, 0, 0, 1, 1, 1};
+Box(2) = {1, 0, 0, 1, 1, 1};
+Coherence;
+Mesh.MeshSizeMax = 0.4;
+e = 1e-3;
+Physical Volume("left", 1) = {1};
+Physical Volume("right", 2) = {2};
+Physical Surface("bottom", 3) = Surface In BoundingBox{-e, -e, -e, 2 + e, 1 + e, e};
+Physical Curve("edge", 4) = Curve In BoundingBox{-e, -e, -e, e, 1 + e, e};
+Physical Point("origin", 5) = Point In BoundingBox{-e, -e, -e, e, e, e};
+)";
+
+/// Same mesh: coordinates within @p tolerance (0: bit for bit), the rest exactly.
+void expectSameMesh(const char* what, const GlobalMesh& a, const GlobalMesh& b, double tolerance) {
+  SCOPED_TRACE(what);
+  EXPECT_EQ(a.dimension, b.dimension);
+  if (tolerance == 0) {
+    EXPECT_EQ(a.coordinates, b.coordinates);
+  } else {
+    ASSERT_EQ(a.coordinates.size(), b.coordinates.size());
+    for (std::size_t i = 0; i < a.coordinates.size(); ++i)
+      ASSERT_NEAR(a.coordinates[i], b.coordinates[i], tolerance) << "coordinate " << i;
+  }
+  ASSERT_EQ(a.blocks.size(), b.blocks.size());
+  for (std::size_t i = 0; i < a.blocks.size(); ++i) {
+    EXPECT_EQ(a.blocks[i].name, b.blocks[i].name);
+    EXPECT_EQ(a.blocks[i].id, b.blocks[i].id);
+    EXPECT_EQ(a.blocks[i].cellType, b.blocks[i].cellType);
+    EXPECT_EQ(a.blocks[i].firstElement, b.blocks[i].firstElement);
+    EXPECT_EQ(a.blocks[i].connectivity, b.blocks[i].connectivity) << "block " << a.blocks[i].name;
+  }
+  ASSERT_EQ(a.sideSets.size(), b.sideSets.size());
+  for (std::size_t i = 0; i < a.sideSets.size(); ++i) {
+    EXPECT_EQ(a.sideSets[i].name, b.sideSets[i].name);
+    EXPECT_EQ(a.sideSets[i].id, b.sideSets[i].id);
+    EXPECT_EQ(a.sideSets[i].elements, b.sideSets[i].elements) << "side set " << a.sideSets[i].name;
+    EXPECT_EQ(a.sideSets[i].sides, b.sideSets[i].sides) << "side set " << a.sideSets[i].name;
+  }
+  ASSERT_EQ(a.nodeSets.size(), b.nodeSets.size());
+  for (std::size_t i = 0; i < a.nodeSets.size(); ++i) {
+    EXPECT_EQ(a.nodeSets[i].name, b.nodeSets[i].name);
+    EXPECT_EQ(a.nodeSets[i].id, b.nodeSets[i].id);
+    EXPECT_EQ(a.nodeSets[i].nodes, b.nodeSets[i].nodes) << "node set " << a.nodeSets[i].name;
+  }
+}
+
+struct FormatCase {
+  std::string label, geo;  // geo: a path
+  int dim;
+  std::string options;
+  std::vector<CellType> types;  // of the blocks, in order
+  std::size_t nodeSets;
+};
+
+}  // namespace
+
+// One mesh, written by gmsh as msh 2.2, 4.1 and 4.1 binary, converts to the
+// same GlobalMesh, linear and quadratic (gmsh meshes a .geo the same way each time).
+TEST(GmshIo, FormatsGiveTheSameMesh) {
+  if (std::system("gmsh --version > /dev/null 2>&1") != 0)
+    GTEST_SKIP() << "gmsh is not installed: skipping the msh 2.2 / 4.1 / binary comparison";
+  const std::string twoBodies = writeText("two_bodies2d.geo", kTwoBodies2d);
+  const std::string twoBoxes = writeText("two_boxes3d.geo", kTwoBoxes3d);
+  const std::string block3d = std::string(COULOMB_SOURCE_DIR) + "/exodus_meshes/block3d.geo";
+  const std::vector<FormatCase> cases = {
+      {"two_bodies", twoBodies, 2, "", {CellType::Tri3, CellType::Quad4}, 3},
+      {"two_bodies_order2", twoBodies, 2, kOrder2, {CellType::Tri6, CellType::Quad9}, 3},
+      {"two_bodies_serendipity", twoBodies, 2, kIncomplete, {CellType::Tri6, CellType::Quad8}, 3},
+      {"two_boxes", twoBoxes, 3, "", {CellType::Tet4, CellType::Tet4}, 3},
+      {"two_boxes_order2", twoBoxes, 3, kOrder2, {CellType::Tet10, CellType::Tet10}, 3},
+      {"block3d_hex20", block3d, 3, "-setnumber n 2 " + kIncomplete, {CellType::Hex20}, 6},
+      {"block3d_hex27", block3d, 3, "-setnumber n 2 " + kOrder2, {CellType::Hex27}, 6}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.label);
+    std::vector<GlobalMesh> meshes;
+    for (const std::string format : {"-format msh22", "-format msh41", "-format msh41 -bin"}) {
+      const std::string msh = outputPath(c.label + "_" + std::to_string(meshes.size()) + ".msh");
+      const std::string command = "gmsh -" + std::to_string(c.dim) + " -v 1 " + format + " " + c.options + " -o " +
+                                  msh + " " + c.geo + " > " + msh + ".log 2>&1";
+      ASSERT_EQ(std::system(command.c_str()), 0) << command;
+      meshes.push_back(coulomb::io::readGmsh(msh));
+    }
+    const GlobalMesh& m = meshes[0];
+    ASSERT_EQ(m.blocks.size(), c.types.size());
+    for (std::size_t b = 0; b < c.types.size(); ++b) EXPECT_EQ(m.blocks[b].cellType, c.types[b]);
+    EXPECT_EQ(m.nodeSets.size(), c.nodeSets);
+    for (const auto& set : m.sideSets) EXPECT_FALSE(set.elements.empty()) << set.name;
+    for (const auto& set : m.nodeSets) EXPECT_FALSE(set.nodes.empty()) << set.name;
+    expectSameMesh("msh 2.2 against msh 4.1", meshes[0], meshes[1], 0);
+    // gmsh's ASCII files hold 16 significant digits, one short of what gives
+    // every double back: the binary file's coordinates may differ in the last
+    // bit (the domains here are of size 1 to 2).
+    expectSameMesh("msh 4.1 against msh 4.1 binary", meshes[1], meshes[2], 1e-15);
+  }
 }

@@ -1,5 +1,6 @@
 /// @file GmshReader.cpp
-/// @brief readGmsh(): parse gmsh 2.2 ASCII, then build blocks and sets (rules
+/// @brief readGmsh(): gmsh's own library reads the file (any .msh version,
+/// ASCII or binary), then its physical groups become blocks and sets (rules
 /// in GmshReader.hpp).
 ///
 /// The side sets are what the solver's contact search and Neumann loads use,
@@ -7,13 +8,19 @@
 /// mismatch is an error rather than a silently smaller set.
 #include "coulomb/io/GmshReader.hpp"
 
+#include <gmsh.h>
+
 #include <algorithm>
 #include <array>
+#include <clocale>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <map>
+#include <new>
+#include <optional>
 #include <set>
-#include <sstream>
+#include <stdexcept>
 #include <unordered_map>
 
 #include "coulomb/core/Error.hpp"
@@ -22,219 +29,184 @@
 namespace coulomb::io {
 namespace {
 
-// Largest number of nodes or elements reserved ahead of reading them.
-constexpr long long kMaxReserve = 1 << 20;
-
 using mesh::CellType;
 
 struct GmshElement {
-  long long tag = 0;
+  std::size_t tag = 0;
   int type = 0;
-  int physical = 0;  // 0: in no physical group
-  std::vector<long long> nodes;  // gmsh node tags
+  std::vector<std::size_t> nodes;  // gmsh node tags, in gmsh's node order
 };
 
-struct GmshFile {
-  std::map<std::pair<int, int>, std::string> physicalNames;  // (dim, tag) -> name
-  std::vector<long long> nodeTags;
-  std::vector<double> xyz;  // 3 per node
+/// One physical group: the elements of all its entities, in element tag order
+/// (the order gmsh numbers and writes them, whatever the file format).
+struct GmshGroup {
+  int dim = 0;
+  int tag = 0;
+  std::string name;
   std::vector<GmshElement> elements;
 };
 
-/// Dimension of a gmsh element type, -1 if unknown.
-int gmshDimension(int type) {
-  switch (type) {
-    case 15: return 0;
-    case 1: case 8: case 26: case 27: case 28: return 1;
-    case 2: case 3: case 9: case 10: case 16: case 20: case 21: case 22: case 23: case 24: case 25: return 2;
-    case 4: case 5: case 6: case 7: case 11: case 12: case 13: case 14: case 17: case 18: case 19: case 29:
-    case 92: case 93: return 3;
-    default: return -1;
-  }
-}
+/// What the conversion needs of the model gmsh read, copied out of gmsh's
+/// global state so that gmsh can be finalised before the conversion starts.
+struct GmshFile {
+  std::vector<std::size_t> nodeTags;
+  std::vector<double> xyz;                 // 3 per node
+  std::vector<GmshGroup> groups;           // ascending (dim, tag); only groups with elements
+  std::map<int, std::string> typeNames;    // gmsh element type -> gmsh's name ("Triangle 6")
+};
 
-/// Number of nodes of the types we convert (first and second order), 0 for the others.
-int gmshSupportedNodes(int type) {
-  switch (type) {
-    case 15: return 1;
-    case 1: return 2;
-    case 2: return 3;
-    case 3: return 4;
-    case 4: return 4;
-    case 5: return 8;
-    case 8: return 3;
-    case 9: return 6;
-    case 10: return 9;
-    case 11: return 10;
-    case 12: return 27;
-    case 16: return 8;
-    case 17: return 20;
-    default: return 0;
-  }
-}
-
-std::string gmshTypeName(int type) {
-  switch (type) {
-    case 1: return "2-node line";
-    case 2: return "3-node triangle";
-    case 3: return "4-node quadrangle";
-    case 4: return "4-node tetrahedron";
-    case 5: return "8-node hexahedron";
-    case 6: return "6-node prism";
-    case 7: return "5-node pyramid";
-    case 8: return "3-node line";
-    case 9: return "6-node triangle";
-    case 10: return "9-node quadrangle";
-    case 11: return "10-node tetrahedron";
-    case 12: return "27-node hexahedron";
-    case 15: return "point";
-    case 16: return "8-node quadrangle";
-    case 17: return "20-node hexahedron";
-    default: return "type " + std::to_string(type);
-  }
-}
-
-class Parser {
+/// What gmsh::initialize changes in the process: it appends the executable's
+/// folder to PATH and PYTHONPATH (again at every initialisation) and sets the
+/// C locale. gmsh 4.8's API cannot be told not to: it exits the process on its
+/// own -noenv and -nolocale ("Unknown option"). So they are put back.
+class ProcessState {
 public:
-  explicit Parser(const std::string& path) : path_(path), in_(path) {
-    COULOMB_REQUIRE(in_.good(), "gmsh mesh '" << path_ << "': cannot open file (missing or not readable)");
-  }
-
-  GmshFile parse() {
-    std::string line;
-    bool sawFormat = false, sawNodes = false, sawElements = false;
-    while (next(line)) {
-      if (line.empty()) continue;
-      COULOMB_REQUIRE(line[0] == '$', where() << "expected a section start like $Nodes, got '" << line << "'");
-      const std::string section = line.substr(1);
-      if (section == "MeshFormat") {
-        readFormat();
-        sawFormat = true;
-      } else if (section == "PhysicalNames") {
-        readPhysicalNames();
-      } else if (section == "Nodes") {
-        COULOMB_REQUIRE(sawFormat, where() << "$Nodes before $MeshFormat");
-        readNodes();
-        sawNodes = true;
-      } else if (section == "Elements") {
-        readElements();
-        sawElements = true;
-      } else {
-        skipSection(section);  // $Periodic, $NodeData, ... are not needed
-      }
+  ProcessState() : locale_(std::setlocale(LC_ALL, nullptr)) {
+    for (const char* name : kVariables) {
+      const char* value = std::getenv(name);
+      values_.push_back(value ? std::optional<std::string>(value) : std::nullopt);
     }
-    COULOMB_REQUIRE(sawFormat && sawNodes && sawElements,
-                    "gmsh mesh '" << path_ << "': missing $MeshFormat, $Nodes or $Elements section");
-    return std::move(file_);
+  }
+  void restoreEnvironment() const {
+    for (std::size_t i = 0; i < values_.size(); ++i) {
+      if (values_[i])
+        setenv(kVariables[i], values_[i]->c_str(), 1);
+      else
+        unsetenv(kVariables[i]);
+    }
+  }
+  void restoreLocale() const { std::setlocale(LC_ALL, locale_.c_str()); }
+
+private:
+  static constexpr const char* kVariables[] = {"PATH", "PYTHONPATH"};
+  std::string locale_;
+  std::vector<std::optional<std::string>> values_;
+};
+
+/// gmsh initialised for one file and finalised after it, also when it throws.
+/// Not once per process: after an error gmsh 4.8 keeps its file lock, and
+/// every later open is then refused with an info message only; a fresh
+/// initialisation clears it, and costs about 0.2 ms.
+class GmshSession {
+public:
+  GmshSession() {
+    gmsh::initialize(0, nullptr, false);  // false: no gmshrc / gmsh-options of the user
+    state_.restoreEnvironment();
+    // Messages go to gmsh's logger (read below for the error), never to the terminal.
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::logger::start();
+  }
+  ~GmshSession() {
+    try {
+      gmsh::logger::stop();
+      gmsh::finalize();
+    } catch (...) {  // a destructor must not throw; the file's error is already on its way
+    }
+    // After gmsh is done: it parses numbers in the C locale.
+    state_.restoreLocale();
+  }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+
+  /// The first error gmsh logged (its root cause: later ones follow from it), "" if none.
+  static std::string firstLoggedError() {
+    std::vector<std::string> log;
+    gmsh::logger::get(log);
+    for (const auto& line : log)
+      if (line.rfind("Error", 0) == 0) return line.substr(std::min(line.size(), line.find(':') + 1));
+    return {};
   }
 
 private:
-  bool next(std::string& line) {
-    if (!std::getline(in_, line)) return false;
-    ++lineNumber_;
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    const auto first = line.find_first_not_of(" \t");
-    line = first == std::string::npos ? std::string() : line.substr(first);
-    return true;
-  }
-  std::string where() const { return "gmsh mesh '" + path_ + "' line " + std::to_string(lineNumber_) + ": "; }
-
-  std::string require(const char* what) {
-    std::string line;
-    COULOMB_REQUIRE(next(line), "gmsh mesh '" << path_ << "': file ends inside " << what);
-    return line;
-  }
-  void expectEnd(const std::string& section) {
-    const std::string line = require(section.c_str());
-    COULOMB_REQUIRE(line.rfind("$End" + section, 0) == 0, where() << "expected $End" << section << ", got '" << line << "'");
-  }
-  long long readCount(const char* what) {
-    std::istringstream s(require(what));
-    long long n = -1;
-    COULOMB_REQUIRE((s >> n) && n >= 0, where() << "expected the number of " << what);
-    return n;
-  }
-
-  void readFormat() {
-    std::istringstream s(require("$MeshFormat"));
-    std::string version;
-    int fileType = -1, dataSize = 0;
-    s >> version >> fileType >> dataSize;
-    COULOMB_REQUIRE(version.rfind("2.", 0) == 0,
-                    where() << "msh format " << version << " is not supported; write format 2.2 ASCII "
-                            << "(gmsh -format msh22, or Mesh.MshFileVersion = 2.2;)");
-    COULOMB_REQUIRE(fileType == 0, where() << "binary .msh files are not supported; write ASCII (Mesh.Binary = 0;)");
-    expectEnd("MeshFormat");
-  }
-
-  void readPhysicalNames() {
-    const long long n = readCount("physical names");
-    for (long long i = 0; i < n; ++i) {
-      const std::string line = require("$PhysicalNames");
-      std::istringstream s(line);
-      int dim = -1, tag = 0;
-      COULOMB_REQUIRE(s >> dim >> tag, where() << "bad physical name line '" << line << "'");
-      const auto open = line.find('"'), close = line.rfind('"');
-      COULOMB_REQUIRE(open != std::string::npos && close > open, where() << "physical name without quotes");
-      file_.physicalNames[{dim, tag}] = line.substr(open + 1, close - open - 1);
-    }
-    expectEnd("PhysicalNames");
-  }
-
-  void readNodes() {
-    const long long n = readCount("nodes");
-    // The count is the file's word: reserve at most what a plausible file
-    // holds (a corrupted count then ends at a bad line, not in a huge allocation).
-    const auto expected = static_cast<std::size_t>(std::min(n, kMaxReserve));
-    file_.nodeTags.reserve(expected);
-    file_.xyz.reserve(3 * expected);
-    for (long long i = 0; i < n; ++i) {
-      std::istringstream s(require("$Nodes"));
-      long long tag = 0;
-      double x = 0, y = 0, z = 0;
-      COULOMB_REQUIRE(s >> tag >> x >> y >> z, where() << "bad node line");
-      file_.nodeTags.push_back(tag);
-      file_.xyz.insert(file_.xyz.end(), {x, y, z});
-    }
-    expectEnd("Nodes");
-  }
-
-  void readElements() {
-    const long long n = readCount("elements");
-    file_.elements.reserve(static_cast<std::size_t>(std::min(n, kMaxReserve)));
-    for (long long i = 0; i < n; ++i) {
-      std::istringstream s(require("$Elements"));
-      GmshElement e;
-      int numTags = 0;
-      COULOMB_REQUIRE(s >> e.tag >> e.type >> numTags && numTags >= 0, where() << "bad element line");
-      for (int t = 0; t < numTags; ++t) {
-        int value = 0;
-        COULOMB_REQUIRE(s >> value, where() << "element " << e.tag << ": missing tag");
-        if (t == 0) e.physical = value;
-      }
-      long long node = 0;
-      while (s >> node) e.nodes.push_back(node);
-      const int expected = gmshSupportedNodes(e.type);
-      COULOMB_REQUIRE(expected == 0 || static_cast<int>(e.nodes.size()) == expected,
-                      where() << "element " << e.tag << " (" << gmshTypeName(e.type) << ") has " << e.nodes.size()
-                              << " nodes, expected " << expected);
-      file_.elements.push_back(std::move(e));
-    }
-    expectEnd("Elements");
-  }
-
-  void skipSection(const std::string& section) {
-    std::string line;
-    while (next(line))
-      if (line.rfind("$End" + section, 0) == 0) return;
-    throw Error("gmsh mesh '" + path_ + "': section $" + section + " has no $End" + section);
-  }
-
-  std::string path_;
-  std::ifstream in_;
-  long long lineNumber_ = 0;
-  GmshFile file_;
+  ProcessState state_;  // taken before gmsh::initialize
 };
+
+std::string oneLine(std::string text) {
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  const auto first = text.find_first_not_of(' ');
+  return first == std::string::npos ? std::string() : text.substr(first);
+}
+
+/// Refuses what is no .msh file before gmsh sees it: gmsh parses any file it
+/// does not recognise as a .geo script, which may run shell commands (System)
+/// and read or write other files.
+void checkIsMshFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  COULOMB_REQUIRE(in.good(), "gmsh mesh '" << path << "': cannot open file (missing or not readable)");
+  std::string first;
+  std::getline(in, first);
+  COULOMB_REQUIRE(first.rfind("$MeshFormat", 0) == 0 || first.rfind("$NOD", 0) == 0,
+                  "gmsh mesh '" << path << "': not a gmsh .msh file (it does not start with $MeshFormat)");
+}
+
+/// The nodes and the physical groups of the mesh gmsh read from @p path.
+GmshFile loadWithGmsh(const std::string& path) {
+  GmshSession session;
+  gmsh::open(path);
+  if (const std::string error = GmshSession::firstLoggedError(); !error.empty()) throw Error(oneLine(error));
+
+  GmshFile file;
+  std::vector<double> parametric;
+  gmsh::model::mesh::getNodes(file.nodeTags, file.xyz, parametric, -1, -1, false, false);
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups);
+  std::sort(groups.begin(), groups.end());
+  for (const auto& [dim, tag] : groups) {
+    GmshGroup group;
+    group.dim = dim;
+    group.tag = tag;
+    gmsh::model::getPhysicalName(dim, tag, group.name);
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+    for (int entity : entities) {
+      std::vector<int> types;
+      std::vector<std::vector<std::size_t>> elementTags, nodeTags;
+      gmsh::model::mesh::getElements(types, elementTags, nodeTags, dim, entity);
+      for (std::size_t t = 0; t < types.size(); ++t) {
+        std::string name;
+        int typeDim = 0, order = 0, numNodes = 0, numPrimary = 0;
+        std::vector<double> reference;
+        gmsh::model::mesh::getElementProperties(types[t], name, typeDim, order, numNodes, reference, numPrimary);
+        file.typeNames[types[t]] = name;
+        const auto perElement = static_cast<std::size_t>(numNodes);
+        COULOMB_CHECK(nodeTags[t].size() == elementTags[t].size() * perElement,
+                      "gmsh returned " << nodeTags[t].size() << " node tags for " << elementTags[t].size() << " "
+                                       << name << " elements");
+        for (std::size_t k = 0; k < elementTags[t].size(); ++k) {
+          const auto first = nodeTags[t].begin() + static_cast<std::ptrdiff_t>(k * perElement);
+          const auto last = first + static_cast<std::ptrdiff_t>(perElement);
+          group.elements.push_back({elementTags[t][k], types[t], {first, last}});
+        }
+      }
+    }
+    std::stable_sort(group.elements.begin(), group.elements.end(),
+                     [](const GmshElement& a, const GmshElement& b) { return a.tag < b.tag; });
+    if (!group.elements.empty()) file.groups.push_back(std::move(group));
+  }
+  return file;
+}
+
+/// loadWithGmsh() with whatever gmsh throws (a std::string in gmsh 4.8, a
+/// std::runtime_error in later versions) as a coulomb::Error naming the file.
+GmshFile readWithGmsh(const std::string& path) {
+  checkIsMshFile(path);
+  const std::string prefix = "gmsh mesh '" + path + "': gmsh cannot read it: ";
+  try {
+    return loadWithGmsh(path);
+  } catch (const InternalError&) {
+    throw;
+  } catch (const Error& e) {
+    throw Error(prefix + e.what());
+  } catch (const std::string& message) {
+    throw Error(prefix + oneLine(message));
+  } catch (const std::bad_alloc&) {
+    throw Error(prefix + "out of memory (a damaged node or element count?)");
+  } catch (const std::exception& e) {
+    throw Error(prefix + oneLine(e.what()));
+  } catch (...) {
+    throw Error(prefix + "gmsh failed without a message");
+  }
+}
 
 // ---------------------------------------------------------------------------
 // Geometry of cells: orientation and validity
@@ -278,22 +250,29 @@ std::vector<double> cornerJacobians(CellType type, const std::vector<Point>& x) 
   return {};
 }
 
-
-CellType cellTypeOf(int gmshType) {
+/// The cell type of a gmsh element type (MSH type numbers), if Coulomb has it.
+std::optional<CellType> cellTypeOf(int gmshType) {
   switch (gmshType) {
     case 2: return CellType::Tri3;
     case 3: return CellType::Quad4;
     case 4: return CellType::Tet4;
+    case 5: return CellType::Hex8;
     case 9: return CellType::Tri6;
     case 10: return CellType::Quad9;
     case 11: return CellType::Tet10;
     case 12: return CellType::Hex27;
     case 16: return CellType::Quad8;
     case 17: return CellType::Hex20;
-    default: return CellType::Hex8;
+    default: return std::nullopt;
   }
 }
 
+/// Boundary elements that can be a cell's side: lines (2D); triangles and
+/// quadrangles, linear and quadratic (3D).
+bool isSideType(int gmshType, int dim) {
+  return dim == 2 ? (gmshType == 1 || gmshType == 8)
+                  : (gmshType == 2 || gmshType == 3 || gmshType == 9 || gmshType == 10 || gmshType == 16);
+}
 
 using FaceKey = std::array<long long, mesh::kMaxFaceNodes>;  // sorted node numbers, padded with -1
 
@@ -322,26 +301,16 @@ public:
 
 private:
   std::string prefix() const { return "gmsh mesh '" + path_ + "': "; }
-  std::string groupLabel(int dim, int tag) const {
+  static std::string groupLabel(const GmshGroup& group) {
     static const char* kinds[] = {"point", "curve", "surface", "volume"};
-    const auto found = file_.physicalNames.find({dim, tag});
-    return "physical " + std::string(kinds[dim]) + " " +
-           (found == file_.physicalNames.end() ? std::string() : "'" + found->second + "' ") + "(tag " +
-           std::to_string(tag) + ")";
+    return "physical " + std::string(kinds[group.dim]) + " " + (group.name.empty() ? "" : "'" + group.name + "' ") +
+           "(tag " + std::to_string(group.tag) + ")";
   }
-  std::string nameOf(int dim, int tag) const {
-    const auto found = file_.physicalNames.find({dim, tag});
-    return found == file_.physicalNames.end() ? std::string() : found->second;
-  }
+  std::string typeName(int type) const { return file_.typeNames.at(type); }
 
   void findDimension() {
     dim_ = -1;
-    for (const auto& e : file_.elements) {
-      if (e.physical == 0) continue;
-      const int d = gmshDimension(e.type);
-      COULOMB_REQUIRE(d >= 0, prefix() << "element " << e.tag << " has unknown gmsh element type " << e.type);
-      dim_ = std::max(dim_, d);
-    }
+    for (const auto& group : file_.groups) dim_ = std::max(dim_, group.dim);
     COULOMB_REQUIRE(dim_ == 2 || dim_ == 3,
                     prefix() << "no physical surface (2D) or volume (3D) found; define e.g. Physical Volume(\"body\") "
                              << "= {...}; so that the bulk elements are written");
@@ -349,7 +318,7 @@ private:
   }
 
   /// Index of a gmsh node tag in file_.nodeTags.
-  std::size_t node(long long tag, long long element) const {
+  std::size_t node(std::size_t tag, std::size_t element) const {
     const auto found = nodeIndex_.find(tag);
     COULOMB_REQUIRE(found != nodeIndex_.end(), prefix() << "element " << element << " refers to undefined node " << tag);
     return found->second;
@@ -359,40 +328,39 @@ private:
   }
 
   void buildBlocks() {
-    std::map<int, std::vector<const GmshElement*>> groups;  // physical tag -> bulk elements
-    for (const auto& e : file_.elements)
-      if (e.physical != 0 && gmshDimension(e.type) == dim_) groups[e.physical].push_back(&e);
-
     // Orient cells on gmsh node indices, then renumber the nodes bulk cells use.
     std::vector<std::vector<std::size_t>> cells;
     std::vector<char> used(file_.nodeTags.size(), 0);
-    for (const auto& [tag, elements] : groups) {
-      const int type = elements.front()->type;
-      COULOMB_REQUIRE(gmshSupportedNodes(type) > 0 && gmshDimension(type) >= 2,
-                      prefix() << groupLabel(dim_, tag) << " has " << gmshTypeName(type)
-                               << " elements; supported: "
-                               << (dim_ == 2 ? "3- and 6-node triangles, 4-, 8- and 9-node quadrangles"
-                                             : "4- and 10-node tetrahedra, 8-, 20- and 27-node hexahedra")
-                               << " (Mesh.ElementOrder 1 or 2)");
+    std::vector<std::size_t> counts;  // cells per block
+    for (const auto& group : file_.groups) {
+      if (group.dim != dim_) continue;
+      const int type = group.elements.front().type;
+      const std::optional<CellType> cellType = cellTypeOf(type);
+      COULOMB_REQUIRE(cellType, prefix() << groupLabel(group) << " has " << typeName(type)
+                                         << " elements; supported: "
+                                         << (dim_ == 2 ? "3- and 6-node triangles, 4-, 8- and 9-node quadrangles"
+                                                       : "4- and 10-node tetrahedra, 8-, 20- and 27-node hexahedra")
+                                         << " (Mesh.ElementOrder 1 or 2)");
       mesh::ElementBlock block;
-      block.name = nameOf(dim_, tag);
-      block.id = tag;
-      block.cellType = cellTypeOf(type);
+      block.name = group.name;
+      block.id = group.tag;
+      block.cellType = *cellType;
       block.firstElement = numCells_;
       const std::vector<int> exodusOrder = gmshToExodus(block.cellType);
-      for (const GmshElement* e : elements) {
-        COULOMB_REQUIRE(e->type == type, prefix() << groupLabel(dim_, tag) << " mixes " << gmshTypeName(type)
-                                                  << " and " << gmshTypeName(e->type)
-                                                  << " elements; an element block holds one cell type: put them in "
-                                                  << "separate physical groups");
+      for (const GmshElement& e : group.elements) {
+        COULOMB_REQUIRE(e.type == type, prefix() << groupLabel(group) << " mixes " << typeName(type) << " and "
+                                                 << typeName(e.type)
+                                                 << " elements; an element block holds one cell type: put them in "
+                                                 << "separate physical groups");
         std::vector<std::size_t> cell;
-        for (int g : exodusOrder) cell.push_back(node(e->nodes[static_cast<std::size_t>(g)], e->tag));
-        orient(block.cellType, cell, e->tag, tag);
+        for (int g : exodusOrder) cell.push_back(node(e.nodes[static_cast<std::size_t>(g)], e.tag));
+        orient(block.cellType, cell, e.tag, group);
         for (std::size_t n : cell) used[n] = 1;
         cells.push_back(std::move(cell));
         ++numCells_;
       }
       mesh_.blocks.push_back(std::move(block));
+      counts.push_back(group.elements.size());
     }
     if (dim_ == 2) checkPlanar(used);
 
@@ -409,14 +377,12 @@ private:
       for (int c = 0; c < dim_; ++c) mesh_.coordinates.push_back(file_.xyz[3 * i + c]);
     }
     std::size_t cellIndex = 0;
-    for (auto& block : mesh_.blocks) {
-      const auto count = static_cast<std::size_t>(groups[block.id].size());
-      for (std::size_t k = 0; k < count; ++k, ++cellIndex)
-        for (std::size_t n : cells[cellIndex]) block.connectivity.push_back(newNumber_[n]);
-    }
+    for (std::size_t b = 0; b < mesh_.blocks.size(); ++b)
+      for (std::size_t k = 0; k < counts[b]; ++k, ++cellIndex)
+        for (std::size_t n : cells[cellIndex]) mesh_.blocks[b].connectivity.push_back(newNumber_[n]);
   }
 
-  void orient(CellType type, std::vector<std::size_t>& cell, long long element, int tag) const {
+  void orient(CellType type, std::vector<std::size_t>& cell, std::size_t element, const GmshGroup& group) const {
     std::vector<Point> x;
     for (std::size_t n : cell) x.push_back(point(n));
     double size = 0;  // longest distance from the first node, for a relative tolerance
@@ -435,7 +401,7 @@ private:
       j = cornerJacobians(type, x);
     }
     for (double v : j)
-      COULOMB_REQUIRE(v > tolerance, prefix() << "element " << element << " of " << groupLabel(dim_, tag)
+      COULOMB_REQUIRE(v > tolerance, prefix() << "element " << element << " of " << groupLabel(group)
                                               << " is degenerate or not convex (corner Jacobian " << v << ")");
   }
 
@@ -450,42 +416,41 @@ private:
                     prefix() << "a 2D mesh must lie in the plane z = 0, but a node has |z| = " << maxZ);
   }
 
+  /// 0-based Exodus numbers of an element's nodes; every one must belong to a bulk cell.
+  std::vector<long long> exodusNodes(const GmshElement& e, const GmshGroup& group) const {
+    std::vector<long long> numbers;
+    for (std::size_t n : e.nodes) {
+      const long long number = newNumber_[node(n, e.tag)];
+      COULOMB_REQUIRE(number >= 0, prefix() << "element " << e.tag << " of " << groupLabel(group) << " uses node "
+                                            << n << ", which no bulk element uses: the group "
+                                            << "is not on the boundary of the meshed region");
+      numbers.push_back(number);
+    }
+    return numbers;
+  }
+
   void buildSets() {
     // Boundary groups (dimension d-1): one side set + one node set each.
-    std::map<int, std::vector<const GmshElement*>> boundary;
-    std::map<std::pair<int, int>, std::set<long long>> pointSets;  // (dim, tag) -> nodes, dim < d-1
-    for (const auto& e : file_.elements) {
-      if (e.physical == 0) continue;
-      const int d = gmshDimension(e.type);
-      if (d == dim_ - 1) {
-        const bool ok = dim_ == 2 ? (e.type == 1 || e.type == 8)
-                                  : (e.type == 2 || e.type == 3 || e.type == 9 || e.type == 10 || e.type == 16);
-        COULOMB_REQUIRE(ok, prefix() << groupLabel(d, e.physical) << " has " << gmshTypeName(e.type)
-                                     << " elements; supported boundary elements: "
-                                     << (dim_ == 2 ? "2- and 3-node lines"
-                                                   : "3- and 6-node triangles, 4-, 8- and 9-node quadrangles"));
-        boundary[e.physical].push_back(&e);
-      } else if (d < dim_ - 1) {
-        COULOMB_REQUIRE(gmshSupportedNodes(e.type) > 0, prefix() << groupLabel(d, e.physical) << " has "
-                                                                 << gmshTypeName(e.type) << " elements");
-        auto& set = pointSets[{d, e.physical}];
-        for (long long n : e.nodes) {
-          const long long number = newNumber_[node(n, e.tag)];
-          COULOMB_REQUIRE(number >= 0, prefix() << groupLabel(d, e.physical) << " contains node " << n
-                                                << ", which no bulk element uses");
-          set.insert(number);
-        }
+    std::vector<const GmshGroup*> boundary, lower;
+    for (const auto& group : file_.groups) {
+      if (group.dim == dim_ - 1) {
+        for (const GmshElement& e : group.elements)
+          COULOMB_REQUIRE(isSideType(e.type, dim_),
+                          prefix() << groupLabel(group) << " has " << typeName(e.type)
+                                   << " elements; supported boundary elements: "
+                                   << (dim_ == 2 ? "2- and 3-node lines"
+                                                 : "3- and 6-node triangles, 4-, 8- and 9-node quadrangles"));
+        boundary.push_back(&group);
+      } else if (group.dim < dim_ - 1) {
+        lower.push_back(&group);
       }
     }
 
     // Match boundary faces against all bulk element sides: key -> (element, side).
     std::map<FaceKey, std::pair<long long, int>> match;
-    for (const auto& [tag, elements] : boundary)
-      for (const GmshElement* e : elements) {
-        std::vector<long long> nodes;
-        for (long long n : e->nodes) nodes.push_back(newNumber_[node(n, e->tag)]);
-        match.emplace(faceKey(nodes), std::make_pair(-1LL, -1));
-      }
+    for (const GmshGroup* group : boundary)
+      for (const GmshElement& e : group->elements)
+        match.emplace(faceKey(exodusNodes(e, *group)), std::make_pair(-1LL, -1));
     for (const auto& block : mesh_.blocks) {
       const int nn = mesh::numNodes(block.cellType);
       for (long long k = 0; k < block.numElements(); ++k)
@@ -498,37 +463,39 @@ private:
     }
 
     std::set<int> nodeSetIds;
-    for (const auto& [tag, elements] : boundary) {
+    for (const GmshGroup* group : boundary) {
       mesh::SideSet sides;
       mesh::NodeSet nodes;
-      sides.name = nodes.name = nameOf(dim_ - 1, tag);
-      sides.id = nodes.id = tag;
+      sides.name = nodes.name = group->name;
+      sides.id = nodes.id = group->tag;
       std::set<long long> nodeSet;
-      for (const GmshElement* e : elements) {
-        std::vector<long long> faceNodes;
-        for (long long n : e->nodes) {
-          const long long number = newNumber_[node(n, e->tag)];
-          COULOMB_REQUIRE(number >= 0, prefix() << "element " << e->tag << " of " << groupLabel(dim_ - 1, tag)
-                                                << " uses node " << n << ", which no bulk element uses: the group "
-                                                << "is not on the boundary of the meshed region");
-          faceNodes.push_back(number);
-        }
+      for (const GmshElement& e : group->elements) {
+        const std::vector<long long> faceNodes = exodusNodes(e, *group);
         const auto& hit = match.at(faceKey(faceNodes));
-        COULOMB_REQUIRE(hit.first >= 0, prefix() << "element " << e->tag << " of " << groupLabel(dim_ - 1, tag)
+        COULOMB_REQUIRE(hit.first >= 0, prefix() << "element " << e.tag << " of " << groupLabel(*group)
                                                  << " is not a side of any bulk element (non-conforming mesh?)");
         sides.elements.push_back(hit.first);
         sides.sides.push_back(hit.second);
         nodeSet.insert(faceNodes.begin(), faceNodes.end());
       }
       nodes.nodes.assign(nodeSet.begin(), nodeSet.end());
-      nodeSetIds.insert(tag);
+      nodeSetIds.insert(group->tag);
       mesh_.sideSets.push_back(std::move(sides));
       mesh_.nodeSets.push_back(std::move(nodes));
     }
-    for (const auto& [key, nodeSet] : pointSets) {
+    // Lower groups (points, curves in 3D): node sets; ids after the boundary ones'.
+    for (const GmshGroup* group : lower) {
+      std::set<long long> nodeSet;
+      for (const GmshElement& e : group->elements)
+        for (std::size_t n : e.nodes) {
+          const long long number = newNumber_[node(n, e.tag)];
+          COULOMB_REQUIRE(number >= 0, prefix() << groupLabel(*group) << " contains node " << n
+                                                << ", which no bulk element uses");
+          nodeSet.insert(number);
+        }
       mesh::NodeSet nodes;
-      nodes.name = nameOf(key.first, key.second);
-      nodes.id = key.second;
+      nodes.name = group->name;
+      nodes.id = group->tag;
       while (nodeSetIds.count(nodes.id)) ++nodes.id;
       nodeSetIds.insert(nodes.id);
       nodes.nodes.assign(nodeSet.begin(), nodeSet.end());
@@ -559,7 +526,7 @@ private:
   GmshFile file_;
   int dim_ = 3;
   long long numCells_ = 0;
-  std::unordered_map<long long, std::size_t> nodeIndex_;
+  std::unordered_map<std::size_t, std::size_t> nodeIndex_;  // gmsh node tag -> index in file_.nodeTags
   std::vector<long long> newNumber_;  // gmsh node index -> 0-based Exodus node, -1 if unused
   mesh::GlobalMesh mesh_;
 };
@@ -595,8 +562,7 @@ const std::vector<int>& exodusSideNodes(CellType type, int side) {
 }
 
 mesh::GlobalMesh readGmsh(const std::string& path) {
-  GmshFile file = Parser(path).parse();
-  return Converter(path, std::move(file)).convert();
+  return Converter(path, readWithGmsh(path)).convert();
 }
 
 }  // namespace coulomb::io

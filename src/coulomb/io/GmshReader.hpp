@@ -1,12 +1,18 @@
 #pragma once
 /// @file GmshReader.hpp
-/// @brief Converts a gmsh ASCII .msh file (format 2.2) into a GlobalMesh.
+/// @brief Converts a gmsh .msh file into a GlobalMesh.
 ///
 /// Why: meshes are authored as gmsh .geo scripts (exodus_meshes/) and the
 /// solver reads only Exodus II; coulomb_gmsh2exo = readGmsh() + ExodusWriter.
-/// Only format 2.2 ASCII is read (`gmsh -format msh22`, what scripts/make_mesh
-/// asks for): it is line-oriented and stable; 4.x and binary files are
-/// refused with a message saying how to produce 2.2.
+/// gmsh's own library (C++ API, Debian libgmsh-dev) reads the file, so every
+/// .msh gmsh writes is read: versions 2.2 and 4.x (4.1 is gmsh's default,
+/// what scripts/make_mesh writes), ASCII and binary, any element order.
+/// Only files that start with $MeshFormat (or msh 1's $NOD) are handed to
+/// it: gmsh would run anything else as a .geo script. gmsh's library is
+/// process-wide state: readGmsh is not thread-safe, and a program that uses
+/// gmsh's API itself must not be inside a gmsh::initialize when it calls
+/// readGmsh (readGmsh initialises and finalises gmsh for each file).
+/// Lives in the library coulomb_gmsh, not in libcoulomb (CMakeLists.txt).
 ///
 /// Mapping of physical groups (d = highest element dimension in the file):
 /// - dimension d (surfaces in 2D, volumes in 3D) -> element blocks, in
@@ -37,10 +43,11 @@
 namespace coulomb::io {
 
 /// @brief Reads and converts @p path (see the file comment for the rules).
-/// @throws coulomb::Error naming @p path (and line, group or element where
-/// it applies) on a missing file, an unsupported format or element type, a
-/// physical group mixing cell types, or a boundary element that is not the
-/// side of any bulk element.
+/// @throws coulomb::Error naming @p path (and group or element where it
+/// applies) on a missing file, a file that is no .msh, anything gmsh cannot
+/// read (with gmsh's message), an unsupported element type, a physical group
+/// mixing cell types, or a boundary element that is not the side of any bulk
+/// element. gmsh prints nothing (its messages go to its logger).
 mesh::GlobalMesh readGmsh(const std::string& path);
 
 /// @brief 0-based local nodes of 0-based Exodus side @p side of a @p type cell,
