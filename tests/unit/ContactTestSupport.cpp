@@ -140,4 +140,29 @@ double nodalDifference(const io::ExodusResults& a, const io::ExodusResults& b, c
   return scale > 0 ? d / scale : d;
 }
 
+std::string assemblyDeck(const std::string& mesh, const std::vector<std::string>& blocks,
+                         const std::vector<std::pair<std::string, std::string>>& fixed, double delta,
+                         const std::vector<AssemblyPair>& pairs, const std::string& axis) {
+  std::ostringstream d;
+  d << "<ParameterList name=\"Coulomb\"><ParameterList name=\"Mesh\"><Parameter name=\"File\" type=\"string\" value=\""
+    << shippedMesh(mesh) << "\"/></ParameterList>"
+    << "<ParameterList name=\"Materials\"><ParameterList name=\"steel\">"
+       "<Parameter name=\"Young's Modulus\" type=\"double\" value=\"210000\"/>"
+       "<Parameter name=\"Poisson's Ratio\" type=\"double\" value=\"0.3\"/></ParameterList></ParameterList>"
+       "<ParameterList name=\"Element Blocks\">";
+  for (const auto& block : blocks)
+    d << "<ParameterList name=\"" << block << "\"><Parameter name=\"Material\" type=\"string\" value=\"steel\"/></ParameterList>";
+  d << "</ParameterList><ParameterList name=\"Dirichlet Conditions\">" << dirichletXml("bottom", "bottom", axis, 0.0)
+    << dirichletXml("top", "top", axis, -delta);
+  for (const auto& [set, component] : fixed) d << dirichletXml(set, set, component, 0.0);
+  d << "</ParameterList><ParameterList name=\"Contact\"><ParameterList name=\"Pairs\">";
+  for (const auto& p : pairs)
+    d << "<ParameterList name=\"" << p.name << "\"><Parameter name=\"Slave\" type=\"string\" value=\"" << p.slave
+      << "\"/><Parameter name=\"Master\" type=\"string\" value=\"" << p.master << "\"/>" << p.options
+      << "</ParameterList>";
+  d << "</ParameterList></ParameterList><ParameterList name=\"Load Stepping\">"
+       "<Parameter name=\"Number of Steps\" type=\"int\" value=\"2\"/></ParameterList></ParameterList>";
+  return d.str();
+}
+
 }  // namespace coulomb::test

@@ -60,6 +60,19 @@ void writeMovedPatch2d(const std::string& path, const std::array<double, 2>& pun
 /// ranks wait for it.
 void writeGradedPatch2d(const std::string& path);
 
+/// A contact pair of assemblyDeck; `options`: more parameters of its sublist (XML).
+struct AssemblyPair {
+  std::string name, slave, master, options = "";
+};
+/// A steel deck (E = 210000, nu = 0.3, plane strain in 2D) on the shipped
+/// mesh `mesh`: `blocks` all steel, u = 0 along `axis` on `bottom`, u =
+/// -delta along it on `top` in 2 steps, u = 0 on each (node set, component)
+/// of `fixed` (also the condition's name), and the pairs (the many-bodies
+/// tests, contact_many_bodies_mpi.cpp).
+std::string assemblyDeck(const std::string& mesh, const std::vector<std::string>& blocks,
+                         const std::vector<std::pair<std::string, std::string>>& fixed, double delta,
+                         const std::vector<AssemblyPair>& pairs, const std::string& axis = "y");
+
 double lastGlobal(const io::ExodusResults& r, const std::string& name);
 const std::vector<double>& lastNodal(const io::ExodusResults& r, const std::string& name);
 /// max |a - b| of nodal `field` over every step, relative to max |a| (a

@@ -284,6 +284,29 @@ TEST(ContactJacobian, Coulomb3DNonObjectiveSlipMatchesFiniteDifferences) {
   expectFrictionalTangentMatchesDifferences("hertz3d_quarter", "hertz3d_quarter.e", kNonObjective, true);
 }
 
+// A slave node that is another pair's master node (PairChaining.hpp): the
+// left block's corner under the tilted punch on two blocks
+// (contact_many_bodies_mpi.cpp), both pairs ALM with Coulomb friction, whose
+// rows depend on the bulk residual: the earlier pair's force folded into
+// the corner's rows by the chain rule, against central differences at a
+// perturbed state (sets frozen). At the converged state the ends of the
+// punch and the blocks coincide (one-sided derivatives of the overlap:
+// 1.2e-6 frictionless with or without the chain); the frictionless values
+// are checked against the saddle-point form instead.
+TEST(ContactJacobian, ChainedPairsCoulomb2DMatchFiniteDifferences) {
+  const std::vector<AssemblyPair> pairs{{"punch", "punch_bottom", "left_base_top, right_base_top", kCoulomb},
+                                        {"bases", "left_base_right", "right_base_left", kCoulomb}};
+  std::string text = assemblyDeck("punch_two_blocks2d.e", {"left_base", "right_base", "punch"},
+                                  {{"left", "x"}, {"right", "x"}}, 0.01, pairs);
+  text = replaceAll(text, dirichletXml("top", "top", "y", -0.01), dirichletXml("top", "top", "y", -0.01, {-0.004, 0.0}));
+  const std::string dir = scratchDirectory("contact_jacobian_chained_coulomb");
+  writeOnRoot(dir + "/deck.xml", text);
+  solver::Simulation simulation(dir + "/deck.xml", worldComm(), nullptr, dir + "/out.e");
+  simulation.run();
+  EXPECT_GT(simulation.contact()->lastSummary().activeSet.active, 5u);
+  EXPECT_LT(directionalError(simulation, 1e-3), 1e-6);
+}
+
 TEST(ContactJacobian, Penalty2DMatchesFiniteDifferences) {
   expectTangentMatchesDifferences("hertz2d", "hertz2d.e", "Penalty");
 }

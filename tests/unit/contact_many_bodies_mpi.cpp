@@ -18,36 +18,6 @@
 namespace coulomb::test {
 namespace {
 
-struct Pair {
-  std::string name, slave, master;
-};
-
-/// A frictionless steel deck (E = 210000, nu = 0.3, plane strain) on a
-/// shipped 2D mesh: `blocks` all steel, u_y = 0 on `bottom`, u_y = -delta on
-/// `top` in 2 steps, u_x = 0 on each of `fixedX`, and the pairs.
-std::string assemblyDeck(const std::string& mesh, const std::vector<std::string>& blocks,
-                         const std::vector<std::string>& fixedX, double delta, const std::vector<Pair>& pairs) {
-  std::ostringstream d;
-  d << "<ParameterList name=\"Coulomb\"><ParameterList name=\"Mesh\"><Parameter name=\"File\" type=\"string\" value=\""
-    << shippedMesh(mesh) << "\"/></ParameterList>"
-    << "<ParameterList name=\"Materials\"><ParameterList name=\"steel\">"
-       "<Parameter name=\"Young's Modulus\" type=\"double\" value=\"210000\"/>"
-       "<Parameter name=\"Poisson's Ratio\" type=\"double\" value=\"0.3\"/></ParameterList></ParameterList>"
-       "<ParameterList name=\"Element Blocks\">";
-  for (const auto& block : blocks)
-    d << "<ParameterList name=\"" << block << "\"><Parameter name=\"Material\" type=\"string\" value=\"steel\"/></ParameterList>";
-  d << "</ParameterList><ParameterList name=\"Dirichlet Conditions\">" << dirichletXml("bottom", "bottom", "y", 0.0)
-    << dirichletXml("top", "top", "y", -delta);
-  for (const auto& set : fixedX) d << dirichletXml(set, set, "x", 0.0);
-  d << "</ParameterList><ParameterList name=\"Contact\"><ParameterList name=\"Pairs\">";
-  for (const auto& p : pairs)
-    d << "<ParameterList name=\"" << p.name << "\"><Parameter name=\"Slave\" type=\"string\" value=\"" << p.slave
-      << "\"/><Parameter name=\"Master\" type=\"string\" value=\"" << p.master << "\"/></ParameterList>";
-  d << "</ParameterList></ParameterList><ParameterList name=\"Load Stepping\">"
-       "<Parameter name=\"Number of Steps\" type=\"int\" value=\"2\"/></ParameterList></ParameterList>";
-  return d.str();
-}
-
 /// Largest |u - (a X, -delta Y / H)| over every node of every rank.
 double linearFieldError(const ContactRun& run, double a, double delta, double H) {
   double error = 0;
@@ -87,11 +57,11 @@ TEST(ContactManyBodies, StackedBlocksTransmitTheUniformStressThroughBothInterfac
   const std::vector<std::string> blocks{"bottom_block", "middle_block", "top_block"};
   for (const bool middleSlaveAbove : {false, true}) {
     SCOPED_TRACE(middleSlaveAbove ? "middle block slave of both pairs" : "middle block master above, slave below");
-    const Pair upper = middleSlaveAbove ? Pair{"upper", "middle_block_top", "top_block_bottom"}
-                                        : Pair{"upper", "top_block_bottom", "middle_block_top"};
-    const Pair lower{"lower", "middle_block_bottom", "bottom_block_top"};
+    const AssemblyPair upper = middleSlaveAbove ? AssemblyPair{"upper", "middle_block_top", "top_block_bottom"}
+                                                : AssemblyPair{"upper", "top_block_bottom", "middle_block_top"};
+    const AssemblyPair lower{"lower", "middle_block_bottom", "bottom_block_top"};
     auto run = runDeckText(middleSlaveAbove ? "stacked_slave_both" : "stacked",
-                           assemblyDeck("stacked_blocks2d.e", blocks, {"left"}, delta, {upper, lower}));
+                           assemblyDeck("stacked_blocks2d.e", blocks, {{"left", "x"}}, delta, {upper, lower}));
     EXPECT_LT(linearFieldError(run, a, delta, H), 1e-9 * delta);
     if (worldComm()->getRank() != 0) continue;
     // Per current length: the interfaces stretch by 1 + a.
@@ -119,16 +89,16 @@ TEST(ContactManyBodies, PunchOnTwoBlocksTransmitsTheUniformStrainState) {
   const double sigmaY = E * (1 - nu) * delta / ((1 + nu) * (1 - 2 * nu));
   const double sigmaX = nu / (1 - nu) * sigmaY;
   const std::vector<std::string> blocks{"left_base", "right_base", "punch"};
-  const Pair bases{"bases", "left_base_right", "right_base_left"};
+  const AssemblyPair bases{"bases", "left_base_right", "right_base_left"};
   for (const bool perBlock : {false, true}) {
     SCOPED_TRACE(perBlock ? "one pair per block, joined" : "one pair with a master list");
-    const std::vector<Pair> pairs =
-        perBlock ? std::vector<Pair>{{"left", "punch_bottom_left", "left_base_top"},
+    const std::vector<AssemblyPair> pairs =
+        perBlock ? std::vector<AssemblyPair>{{"left", "punch_bottom_left", "left_base_top"},
                                      {"right", "punch_bottom_right", "right_base_top"},
                                      bases}
-                 : std::vector<Pair>{{"punch", "punch_bottom", "left_base_top, right_base_top"}, bases};
+                 : std::vector<AssemblyPair>{{"punch", "punch_bottom", "left_base_top, right_base_top"}, bases};
     auto run = runDeckText(perBlock ? "punch_per_block" : "punch_master_list",
-                           assemblyDeck("punch_two_blocks2d.e", blocks, {"left", "right"}, delta, pairs));
+                           assemblyDeck("punch_two_blocks2d.e", blocks, {{"left", "x"}, {"right", "x"}}, delta, pairs));
     EXPECT_LT(linearFieldError(run, 0.0, delta, 1.0), 1e-9 * delta);
     if (worldComm()->getRank() != 0) continue;
     const std::string punch = perBlock ? "left+right" : "punch";
@@ -144,7 +114,36 @@ TEST(ContactManyBodies, PunchOnTwoBlocksTransmitsTheUniformStrainState) {
   }
 }
 
-// The punch of the last test tilted (top u_y = -delta - 0.004 x): the
+// The same punch on two blocks in 3D (exodus_meshes/punch_two_blocks3d.geo,
+// HEX8, no interface matching): held at x = 0, 2 and y = 0, 1, pressed by
+// delta along z (H = 1): u = (0, 0, -delta z), sigma_zz under the punch and
+// sigma_xx = nu / (1 - nu) sigma_zz between the blocks. The punch's slave
+// surface lies on both blocks' tops (a master list), the left block's top
+// edge at x = 1 is slave of `bases` and master of `punch`.
+TEST(ContactManyBodies, PunchOnTwoBlocks3DTransmitsTheUniformStrainState) {
+  const double E = 210000, nu = 0.3, delta = 0.01;
+  const double sigmaZ = E * (1 - nu) * delta / ((1 + nu) * (1 - 2 * nu));
+  const double sigmaX = nu / (1 - nu) * sigmaZ;
+  const std::vector<AssemblyPair> pairs{{"punch", "punch_bottom", "left_base_top, right_base_top"},
+                                        {"bases", "left_base_right", "right_base_left"}};
+  auto run = runDeckText("punch_two_blocks_3d",
+                         assemblyDeck("punch_two_blocks3d.e", {"left_base", "right_base", "punch"},
+                                      {{"left", "x"}, {"right", "x"}, {"front", "y"}, {"back", "y"}}, delta, pairs, "z"));
+  double error = 0;
+  forOwnedNodes(*run.simulation, [&](long long, const double* X, const double* u) {
+    error = std::max({error, std::abs(u[0]), std::abs(u[1]), std::abs(u[2] + delta * X[2])});
+  });
+  EXPECT_LT(globalMax(error), 1e-9 * delta);
+  if (worldComm()->getRank() != 0) return;
+  // Every slave node: the punch's 6 x 4, the left block's side 3 x 3.
+  EXPECT_EQ(countPressures(run, {sigmaZ, sigmaX / (1 - delta)}), (std::vector<int>{24, 9}));
+  EXPECT_NEAR(lastGlobal(run.results, "contact_force_punch_z"), 2 * sigmaZ, 1e-8 * sigmaZ);
+  EXPECT_NEAR(lastGlobal(run.results, "contact_force_bases_x"), -0.5 * sigmaX, 1e-8 * sigmaX);
+  EXPECT_NEAR(lastGlobal(run.results, "reaction_top_z"), -2 * sigmaZ, 1e-8 * sigmaZ);
+  EXPECT_NEAR(lastGlobal(run.results, "reaction_bottom_z"), 2 * sigmaZ, 1e-8 * sigmaZ);
+}
+
+// The punch of the last 2D test tilted (top u_y = -delta - 0.004 x): the
 // left block's corner (1, 0.5), a slave node of `bases`, is a master node of
 // the punch's pair, whose force there now has a part along the normal of
 // `bases`. The condensed form takes it into that node's conditions
@@ -153,9 +152,9 @@ TEST(ContactManyBodies, PunchOnTwoBlocksTransmitsTheUniformStrainState) {
 // agree to solver tolerance.
 TEST(ContactManyBodies, SlaveNodeThatIsAnotherPairsMasterNodeMatchesTheSaddlePointForm) {
   const std::vector<std::string> blocks{"left_base", "right_base", "punch"};
-  const std::vector<Pair> pairs{{"punch", "punch_bottom", "left_base_top, right_base_top"},
+  const std::vector<AssemblyPair> pairs{{"punch", "punch_bottom", "left_base_top, right_base_top"},
                                 {"bases", "left_base_right", "right_base_left"}};
-  std::string deck = assemblyDeck("punch_two_blocks2d.e", blocks, {"left", "right"}, 0.01, pairs);
+  std::string deck = assemblyDeck("punch_two_blocks2d.e", blocks, {{"left", "x"}, {"right", "x"}}, 0.01, pairs);
   const std::string top = dirichletXml("top", "top", "y", -0.01);
   const auto at = deck.find(top);
   ASSERT_NE(at, std::string::npos);
