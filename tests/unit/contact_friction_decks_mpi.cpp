@@ -19,27 +19,6 @@
 namespace coulomb::test {
 namespace {
 
-/// The slip deck turned into the stick variant: no slip, tau = mu p / 2.
-std::string stickPatchDeck() {
-  ShippedDeck deck("friction_patch_2d", "contact_patch2d.e");
-  deck.replace("<Parameter name=\"Value\" type=\"double\" value=\"0.002\"/>", "");
-  deck.replace("0.004285714285714286, 0.008571428571428572", "0.004285714285714286, 0.004285714285714286");
-  for (int i = 0; i < 4; ++i) deck.replace("692.3076923076923}", "346.15384615384615}");
-  return deck.text;
-}
-
-/// Max over owned nodes of |u - homogeneous field| (punch: + (slip, 0)).
-double homogeneousFieldError(const solver::Simulation& simulation, double shearTraction, double slip) {
-  const double gamma = shearTraction / kShearModulus;
-  double error = 0;
-  forOwnedNodes(simulation, [&](long long, const double* X, const double* u) {
-    const bool punch = X[1] > 0.5 + 1e-12 || (std::abs(X[1] - 0.5) < 1e-12 && u[0] > kEpsXX * X[0] + 0.5 * gamma + slip / 2);
-    const double ux = kEpsXX * X[0] + gamma * X[1] + (punch ? slip : 0.0), uy = -0.01 * X[1];
-    error = std::max({error, std::abs(u[0] - ux), std::abs(u[1] - uy)});
-  });
-  return globalMax(error);
-}
-
 /// The sliding punch of a variant (xml/friction_punch.xml edited): no
 /// cutback, at most 4 Newton iterations per increment on average, and in
 /// gross slip Q = mu P within 1 % (checked on rank 0). Prints the figures.

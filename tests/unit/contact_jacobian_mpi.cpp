@@ -1,6 +1,6 @@
 // The condensed contact tangent J = T (K + K_c) + G against central finite
 // differences of the condensed residual F (active set frozen), on distorted,
-// non-matching meshes in 2D (QUAD4 / Line2 mortar) and 3D (TET4 / Tri3
+// non-matching meshes in 2D (QUAD4 / Line2 and QUAD9 / Line3 mortar) and 3D (TET4 / Tri3
 // mortar with symmetry planes):
 //  - Penalty: F = r - f_c is a smooth function of u for a fixed set, and J is
 //    its exact derivative (through D, M, g~ and the nodal normals), anywhere.
@@ -59,7 +59,9 @@ std::unique_ptr<solver::Simulation> solveDistorted(const std::string& deck, cons
                                            (saddlePoint ? "_saddle_point" : ""));
   writeDistortedCopy(shippedMesh(mesh), dir + "/mesh.e", 0.15);
   std::string text = readFile(std::string(COULOMB_SOURCE_DIR) + "/xml/" + deck + ".xml");
-  text = replaceAll(text, "../exodus_meshes/" + mesh, "mesh.e");
+  // The deck's mesh, whichever it names, becomes the distorted copy of `mesh`.
+  const auto at = text.find("../exodus_meshes/");
+  text.replace(at, text.find('"', at) - at, "mesh.e");
   text = replaceAll(text, "name=\"Formulation\" type=\"string\" value=\"ALM\"/>",
                     "name=\"Formulation\" type=\"string\" value=\"" + formulation + "\"/>" + friction);
   if (saddlePoint)
@@ -222,7 +224,9 @@ std::unique_ptr<solver::Simulation> solvePrescribedEdge(int dim) {
   writeDistortedCopy(source, dir + "/mesh.e", 0.15);
   const std::string deck = dim == 2 ? "friction_patch_2d" : "friction_patch_3d";
   std::string text = readFile(std::string(COULOMB_SOURCE_DIR) + "/xml/" + deck + ".xml");
-  text = replaceAll(text, "../exodus_meshes/" + mesh, "mesh.e");
+  // The deck's mesh, whichever it names, becomes the distorted copy of `mesh`.
+  const auto at = text.find("../exodus_meshes/");
+  text.replace(at, text.find('"', at) - at, "mesh.e");
   const std::string coefficients = dim == 2 ? "{0.004285714285714286, 0.008571428571428572}"
                                             : "{0.003, 0.0, 0.0078000000000000005}";
   text = replaceAll(text, "<ParameterList name=\"top y\">",
@@ -305,6 +309,15 @@ TEST(ContactJacobian, ChainedPairsCoulomb2DMatchFiniteDifferences) {
   simulation.run();
   EXPECT_GT(simulation.contact()->lastSummary().activeSet.active, 5u);
   EXPECT_LT(directionalError(simulation, 1e-3), 1e-6);
+}
+
+// The same on QUAD9 cells (curved LINE3 contact faces, the quadratic dual
+// basis; issue 18, item 2).
+TEST(ContactJacobian, QuadraticCoulomb2DMatchesFiniteDifferences) {
+  expectFrictionalTangentMatchesDifferences("hertz2d", "hertz2d_quad9.e", "", true);
+}
+TEST(ContactJacobian, QuadraticPenalty2DMatchesFiniteDifferences) {
+  expectTangentMatchesDifferences("hertz2d", "hertz2d_quad9.e", "Penalty");
 }
 
 TEST(ContactJacobian, Penalty2DMatchesFiniteDifferences) {

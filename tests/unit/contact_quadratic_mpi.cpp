@@ -1,4 +1,5 @@
-// Contact on quadratic faces (issue 18, item 2): the 2D patch test with
+// Contact on quadratic faces (issue 18, item 2): the 2D patch tests,
+// frictionless and with Coulomb friction (stick and imposed slip), with
 // QUAD9 and QUAD8 cells, whose LINE3 contact faces take the standard
 // quadratic dual basis (MortarSegmentCurved2D.hpp). np = 1, 2, 3.
 #include <gtest/gtest.h>
@@ -7,6 +8,7 @@
 #include <string>
 
 #include "ContactTestSupport.hpp"
+#include "FrictionDeckSupport.hpp"
 #include "TestSupport.hpp"
 
 namespace coulomb::test {
@@ -48,6 +50,46 @@ TEST(ContactPatch, QuadraticLine3FacesTransmitUniformPressure) {
     EXPECT_NEAR(lastGlobal(run.results, "contact_force_punch_y"), sigma, 1e-8 * sigma);
     EXPECT_NEAR(lastGlobal(run.results, "reaction_top_y"), -sigma, 1e-8 * sigma);
   }
+}
+
+// Perfect stick below the cone (contact_friction_decks_mpi.cpp,
+// FrictionPatch.StickBelowTheConeIsExact) with QUAD9 cells: the homogeneous
+// field to round-off (the deck solves every linear system to 1e-10), all 15
+// slave nodes sticking at traction -tau.
+TEST(FrictionPatch, QuadraticStickBelowTheConeIsExact) {
+  auto run = runDeckText("friction_patch_stick_quad9", stickPatchDeck("contact_patch2d_quad9.e"));
+  const double tau = kMu * kPressure / 2;
+  EXPECT_LT(homogeneousFieldError(*run.simulation, tau, 0.0), 1e-9 * 0.01);
+  if (worldComm()->getRank() != 0) return;
+  const double stretch = 1 + kEpsXX;  // tractions are per current length
+  const auto nodes = checkTractions(run.results, [&](double) { return -tau / stretch; }, 1e-8 * kPressure);
+  EXPECT_EQ(nodes.stick, 15);
+  EXPECT_EQ(nodes.slip, 0);
+  EXPECT_NEAR(lastGlobal(run.results, "contact_force_punch_x"), -tau, 1e-8 * kPressure);
+  EXPECT_NEAR(lastGlobal(run.results, "reaction_top_x"), tau, 1e-8 * kPressure);
+}
+
+// The imposed slide of xml/friction_patch_2d.xml with QUAD9 cells: every
+// one of the 15 slave nodes slips with the traction mu p (the objective
+// slip with the quadratic D and M), momentum balance.
+TEST(FrictionPatch, QuadraticImposedSlipCarriesMuTimesPressure) {
+  ShippedDeck deck("friction_patch_2d", "contact_patch2d.e");
+  deck.replace(shippedMesh("contact_patch2d.e"), shippedMesh("contact_patch2d_quad9.e"));
+  auto run = runDeckText("friction_patch_slip_quad9", deck.text);
+  if (worldComm()->getRank() != 0) return;
+  const auto nodes = checkTractions(run.results, [](double p) { return -kMu * p; }, 1e-8 * kPressure);
+  EXPECT_EQ(nodes.slip, 15);
+  EXPECT_EQ(nodes.stick, 0);
+  const auto& slip = lastNodal(run.results, "contact_slip_x");
+  const auto& state = lastNodal(run.results, "contact_state");
+  for (std::size_t i = 0; i < slip.size(); ++i)
+    if (state[i] > 0.5) {
+      EXPECT_GT(slip[i], 0.5 * kImposedSlip) << "node " << i + 1;
+      EXPECT_LT(slip[i], 1.5 * kImposedSlip) << "node " << i + 1;
+    }
+  const double Q = lastGlobal(run.results, "contact_force_punch_x"), P = lastGlobal(run.results, "contact_force_punch_y");
+  EXPECT_NEAR(Q / P, -kMu, 1e-3 * kMu);
+  EXPECT_NEAR(lastGlobal(run.results, "reaction_top_x"), -Q, 1e-8 * kPressure);
 }
 
 }  // namespace
