@@ -319,6 +319,10 @@ TEST(ContactJacobian, QuadraticCoulomb2DMatchesFiniteDifferences) {
 TEST(ContactJacobian, QuadraticPenalty2DMatchesFiniteDifferences) {
   expectTangentMatchesDifferences("hertz2d", "hertz2d_quad9.e", "Penalty");
 }
+// QUAD9 faces in 3D (HEX27 cells, sub-facet segmentation), ALM at equilibrium.
+TEST(ContactJacobian, QuadraticAlm3DMatchesFiniteDifferencesAtEquilibrium) {
+  expectTangentMatchesDifferences("contact_patch_3d", "contact_patch3d_hex27.e", "ALM");
+}
 
 TEST(ContactJacobian, Penalty2DMatchesFiniteDifferences) {
   expectTangentMatchesDifferences("hertz2d", "hertz2d.e", "Penalty");

@@ -39,7 +39,7 @@ struct Surface {
           FaceAtNode& face = around.emplace_back();
           face.type = type;
           face.corner = a;
-          face.nodes = f;
+          for (int b = 0; b < faceNodes(); ++b) face.nodes[b] = f[b];
           for (int b = 0; b < faceNodes(); ++b) face.x[b] = x[f[b]];
         }
     return around;

@@ -1,7 +1,8 @@
 // Contact on quadratic faces (issue 18, item 2): the 2D patch tests,
 // frictionless and with Coulomb friction (stick and imposed slip), with
 // QUAD9 and QUAD8 cells, whose LINE3 contact faces take the standard
-// quadratic dual basis (MortarSegmentCurved2D.hpp). np = 1, 2, 3.
+// quadratic dual basis (MortarSegmentCurved2D.hpp), and the 3D patch with
+// HEX27 cells (QUAD9 faces, MortarSegmentQuadratic3D.hpp). np = 1, 2, 3.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -50,6 +51,44 @@ TEST(ContactPatch, QuadraticLine3FacesTransmitUniformPressure) {
     EXPECT_NEAR(lastGlobal(run.results, "contact_force_punch_y"), sigma, 1e-8 * sigma);
     EXPECT_NEAR(lastGlobal(run.results, "reaction_top_y"), -sigma, 1e-8 * sigma);
   }
+}
+
+// xml/contact_patch_3d.xml on its HEX27 mesh (QUAD9 contact faces,
+// segmented on sub-facets, MortarSegmentQuadratic3D.hpp; 4 x 4 slave faces
+// on 3 x 3 master faces): the uniaxial stress E delta, u_z = -delta z, u_x =
+// nu delta x, u_y = nu delta y to round-off, all 81 slave nodes (corners,
+// mid-sides and centres) at the same pressure.
+TEST(ContactPatch, QuadraticQuad9FacesTransmitUniformPressure) {
+  ShippedDeck deck("contact_patch_3d", "contact_patch3d.e");
+  deck.replace(shippedMesh("contact_patch3d.e"), shippedMesh("contact_patch3d_hex27.e"));
+  // To round-off: Newton to 1e-12 of the force scale, each linear solve to 1e-10.
+  const std::string contact = "<ParameterList name=\"Contact\">";
+  deck.replace(contact, "<ParameterList name=\"Newton\"><Parameter name=\"Relative Tolerance\" type=\"double\" "
+                        "value=\"1e-12\"/><Parameter name=\"Linear Tolerance\" type=\"string\" value=\"Fixed\"/>"
+                        "</ParameterList>\n  " + contact);
+  auto run = runDeckText("contact_patch_3d_hex27", deck.text);
+  const double E = 210000, nu = 0.3, delta = 0.01;
+  double error = 0;
+  forOwnedNodes(*run.simulation, [&](long long, const double* X, const double* u) {
+    error = std::max({error, std::abs(u[2] + delta * X[2]), std::abs(u[0] - nu * delta * X[0]),
+                      std::abs(u[1] - nu * delta * X[1])});
+  });
+  EXPECT_LT(globalMax(error), 1e-9 * delta);
+  EXPECT_LE(run.summary.newtonIterations, 4);
+  if (worldComm()->getRank() != 0) return;
+  const double sigma = E * delta;
+  const double current = sigma / ((1 + nu * delta) * (1 + nu * delta));  // per current area
+  const auto& pressure = lastNodal(run.results, "contact_pressure");
+  const auto& state = lastNodal(run.results, "contact_state");
+  int active = 0;
+  for (std::size_t i = 0; i < state.size(); ++i)
+    if (state[i] > 0.5) {
+      ++active;
+      EXPECT_NEAR(pressure[i], current, 1e-8 * current) << "node " << i + 1;
+    }
+  EXPECT_EQ(active, 81);
+  EXPECT_NEAR(lastGlobal(run.results, "contact_force_punch_z"), sigma, 1e-8 * sigma);
+  EXPECT_NEAR(lastGlobal(run.results, "reaction_top_z"), -sigma, 1e-8 * sigma);
 }
 
 // Perfect stick below the cone (contact_friction_decks_mpi.cpp,

@@ -76,6 +76,16 @@ constexpr int numNodes(FaceType t) {
   }
   return 0;
 }
+/// Number of corner nodes of a face (they lead its node list).
+constexpr int numCorners(FaceType t) {
+  switch (t) {
+    case FaceType::Line2:
+    case FaceType::Line3: return 2;
+    case FaceType::Tri3:
+    case FaceType::Tri6: return 3;
+    default: return 4;
+  }
+}
 constexpr bool isQuadratic(FaceType t) {
   return t != FaceType::Line2 && t != FaceType::Tri3 && t != FaceType::Quad4;
 }

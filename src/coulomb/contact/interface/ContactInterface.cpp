@@ -83,11 +83,11 @@ std::vector<ContactFace> collectFaces(const mesh::Mesh& mesh, const SetList& set
         throw Error(what + ": " + role + " side set '" + shown + "', element " + std::to_string(face.element + 1) +
                     ": " + e.what());
       }
-      // Quadratic faces: Line3 in 2D (its standard quadratic dual basis keeps
-      // D positive, MortarSegmentCurved2D). In 3D only Quad9 would; Tri6 and
-      // Quad8 need a transformed basis (not yet), so a pair refuses them
-      // rather than treating them as linear.
-      COULOMB_REQUIRE(!mesh::isQuadratic(face.type) || face.type == mesh::FaceType::Line3,
+      // Quadratic faces: Line3 in 2D and Quad9 in 3D, whose standard
+      // quadratic dual bases keep D positive (MortarSegmentCurved2D,
+      // MortarSegmentQuadratic3D). Tri6 and Quad8 need a transformed basis
+      // (not yet), so a pair refuses them rather than treating them as linear.
+      COULOMB_REQUIRE(face.type != mesh::FaceType::Tri6 && face.type != mesh::FaceType::Quad8,
                       what << ": " << role << " side set '" << shown << "' is on element block '"
                            << mesh::displayName(block.name, "block", block.id) << "' of "
                            << mesh::toString(block.cellType) << " cells: contact on quadratic faces ("

@@ -14,8 +14,9 @@
 /// evaluate anything about it, since all faces and (after InterfaceGather,
 /// below) all current interface coordinates are replicated.
 ///
-/// Faces: 2D meshes give Line2 faces, 3D meshes Tri3 (Tet4 sides) or Quad4
-/// (Hex8 sides); face nodes are in the outward order of fem::faceLocalNodes
+/// Faces: 2D meshes give Line2 faces (Line3 of quadratic cells), 3D meshes
+/// Tri3 (Tet4 sides), Quad4 (Hex8 sides) or Quad9 (Hex27 sides); face nodes
+/// are in the outward order of fem::faceLocalNodes
 /// (right-hand rule / (dy, -dx) normal points out of the element).
 #include <array>
 #include <string>
@@ -34,10 +35,11 @@ struct ContactFace {
   long long element = -1;          ///< 0-based global element number
   int side = -1;                   ///< 0-based local side (Exodus side - 1)
   mesh::FaceType type = mesh::FaceType::Line2;
-  int numNodes = 0;                ///< 2, 3 or 4
-  std::array<long long, 4> nodes{-1, -1, -1, -1};  ///< global node numbers, outward order
+  int numNodes = 0;                ///< 2, 3 or 4 (linear), 3 (Line3), 9 (Quad9)
+  /// Global node numbers, outward order (corners first, as Exodus).
+  std::array<long long, mesh::kMaxFaceNodes> nodes{-1, -1, -1, -1, -1, -1, -1, -1, -1};
   /// Indices of the nodes in ContactInterface::interfaceNodes() (slave ∪ master).
-  std::array<int, 4> interfaceIndex{-1, -1, -1, -1};
+  std::array<int, mesh::kMaxFaceNodes> interfaceIndex{-1, -1, -1, -1, -1, -1, -1, -1, -1};
   int owner = -1;                  ///< rank owning the element
 };
 

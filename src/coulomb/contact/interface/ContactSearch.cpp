@@ -54,10 +54,11 @@ void requireRadius(double value, const char* what) {
                   "contact search: the " << what << " must be finite and >= 0, got " << value);
 }
 
-/// Faces as coordinates (2D: z = 0).
+/// The corners of a face as coordinates (2D: z = 0); a quadratic face is
+/// judged by the straight face of its corners (a proximity test).
 std::array<std::array<double, 3>, 4> faceCoordinates(const ContactFace& face, const InterfaceConfiguration& x) {
   std::array<std::array<double, 3>, 4> nodes{};
-  for (int a = 0; a < face.numNodes; ++a)
+  for (int a = 0; a < mesh::numCorners(face.type); ++a)
     for (int c = 0; c < x.dimension; ++c) nodes[a][c] = x.point(face.interfaceIndex[a])[c];
   return nodes;
 }
@@ -81,7 +82,7 @@ void recordUnpairedDepth(const ContactInterface& contact, const InterfaceConfigu
     for (auto it = tree.qbegin(bgi::nearest(query, static_cast<unsigned>(tree.size()))); it != tree.qend(); ++it) {
       if (bg::distance(query, it->first) > best) break;
       const ContactFace& master = masters[it->second];
-      const FaceProximity near = faceProximity(x.dimension, master.numNodes, faceCoordinates(master, x), point);
+      const FaceProximity near = faceProximity(x.dimension, mesh::numCorners(master.type), faceCoordinates(master, x), point);
       if (near.distance < best) {
         best = near.distance;
         nearest = near;

@@ -23,6 +23,7 @@
 #include "coulomb/contact/mortar/MortarSegment2D.hpp"
 #include "coulomb/contact/mortar/MortarSegmentCurved2D.hpp"
 #include "coulomb/contact/mortar/MortarSegment3D.hpp"
+#include "coulomb/contact/mortar/MortarSegmentQuadratic3D.hpp"
 #include "coulomb/core/Error.hpp"
 #include "coulomb/core/Parallel.hpp"
 
@@ -196,6 +197,24 @@ void pair3D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
   }
 }
 
+/// A 3D pair with a Quad9 face (MortarSegmentQuadratic3D.hpp).
+template <FaceType S, FaceType Mf>
+void quadraticPair3D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
+  const auto xs = faceCoordinates<S>(s, p.x);
+  const auto ns = faceNormals<S>(s, p.contact, p.normals);
+  const auto xm = faceCoordinates<Mf>(m, p.x);
+  if (p.withDerivatives && integrateQuadraticSegment3D<S, Mf, double>(xs, ns, xm, p.tolerance).contributes) {
+    const auto lin = linearizeQuadraticSegment3D<S, Mf>(xs, ns, xm, p.tolerance);
+    if (!lin.value.contributes) return;
+    const InputChain chain = buildChain(3, s, m, p.contact, p.normals);
+    accumulate(lin.value, &lin, &chain, s, m, p.out);
+  } else if (!p.withDerivatives) {
+    const auto value = integrateQuadraticSegment3D<S, Mf, double>(xs, ns, xm, p.tolerance);
+    if (!value.contributes) return;
+    accumulate(value, static_cast<const MortarSegment3DLinearization<S, Mf>*>(nullptr), nullptr, s, m, p.out);
+  }
+}
+
 void integratePair(const PairContext& p, const ContactFace& s, const ContactFace& m) {
   if (p.contact.dimension() == 2) {
     const bool sQuadratic = s.type == FaceType::Line3, mQuadratic = m.type == FaceType::Line3;
@@ -205,6 +224,14 @@ void integratePair(const PairContext& p, const ContactFace& s, const ContactFace
     return pair2D(p, s, m);
   }
   const bool sTri = s.type == FaceType::Tri3, mTri = m.type == FaceType::Tri3;
+  if (s.type == FaceType::Quad9) {
+    if (m.type == FaceType::Quad9) return quadraticPair3D<FaceType::Quad9, FaceType::Quad9>(p, s, m);
+    if (mTri) return quadraticPair3D<FaceType::Quad9, FaceType::Tri3>(p, s, m);
+    return quadraticPair3D<FaceType::Quad9, FaceType::Quad4>(p, s, m);
+  }
+  if (m.type == FaceType::Quad9)
+    return sTri ? quadraticPair3D<FaceType::Tri3, FaceType::Quad9>(p, s, m)
+                : quadraticPair3D<FaceType::Quad4, FaceType::Quad9>(p, s, m);
   if (sTri && mTri) return pair3D<FaceType::Tri3, FaceType::Tri3>(p, s, m);
   if (sTri) return pair3D<FaceType::Tri3, FaceType::Quad4>(p, s, m);
   if (mTri) return pair3D<FaceType::Quad4, FaceType::Tri3>(p, s, m);
@@ -245,6 +272,8 @@ double nodalSupportMeasure(const ContactInterface& contact, const InterfaceConfi
       measure += ringMass<double>(faceCoordinates<FaceType::Line2>(f, x)).De[corner];
     else if (f.type == FaceType::Line2)
       measure += faceMass<FaceType::Line2, double>(faceCoordinates<FaceType::Line2>(f, x)).De[corner];
+    else if (f.type == FaceType::Quad9)
+      measure += faceMass<FaceType::Quad9, double>(faceCoordinates<FaceType::Quad9>(f, x)).De[corner];
     else if (f.type == FaceType::Tri3)
       measure += faceMass<FaceType::Tri3, double>(faceCoordinates<FaceType::Tri3>(f, x)).De[corner];
     else

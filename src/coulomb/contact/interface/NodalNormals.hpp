@@ -13,7 +13,8 @@
 ///          tangents of its two faces at their ends;
 ///   Tri3: (x_1 - x_0) × (x_2 - x_0) normalised (the same at all corners);
 ///   Quad4: x_xi × x_eta of the bilinear face at the corner, normalised, i.e.
-///          (x_next - x_a) × (x_prev - x_a) at corner a (next/prev in face order).
+///          (x_next - x_a) × (x_prev - x_a) at corner a (next/prev in face order);
+///   Quad9: x_xi × x_eta of the biquadratic face at each of its nine nodes.
 /// Every adjacent face counts once (unit normals, equal weights): on a flat
 /// surface n_j is the plane normal exactly; on a smooth curved surface with a
 /// smoothly varying (structured) faceting the error against the exact normal is
@@ -29,7 +30,7 @@
 /// sparse list over the nodes of all faces around j.
 ///
 /// Scalars: faceCornerNormals is explicitly instantiated for double and for
-/// Sacado::Fad::SFad<double, dim × nodes> (4 Line2, 6 Line3, 9 Tri3, 12 Quad4); only the
+/// Sacado::Fad::SFad<double, dim × nodes> (4 Line2, 6 Line3, 9 Tri3, 12 Quad4, 27 Quad9); only the
 /// double versions are declared here (no Sacado in headers).
 #include <array>
 #include <vector>
@@ -51,6 +52,8 @@ extern template FaceNodes<mesh::FaceType::Line3, double> faceCornerNormals<mesh:
     const FaceNodes<mesh::FaceType::Line3, double>&);
 extern template FaceNodes<mesh::FaceType::Tri3, double> faceCornerNormals<mesh::FaceType::Tri3, double>(
     const FaceNodes<mesh::FaceType::Tri3, double>&);
+extern template FaceNodes<mesh::FaceType::Quad9, double> faceCornerNormals<mesh::FaceType::Quad9, double>(
+    const FaceNodes<mesh::FaceType::Quad9, double>&);
 extern template FaceNodes<mesh::FaceType::Quad4, double> faceCornerNormals<mesh::FaceType::Quad4, double>(
     const FaceNodes<mesh::FaceType::Quad4, double>&);
 
@@ -58,8 +61,8 @@ extern template FaceNodes<mesh::FaceType::Quad4, double> faceCornerNormals<mesh:
 struct FaceAtNode {
   mesh::FaceType type = mesh::FaceType::Line2;
   int corner = 0;                               ///< position of the node in the face
-  std::array<long long, 4> nodes{-1, -1, -1, -1};  ///< global node numbers (label the derivative)
-  std::array<std::array<double, 3>, 4> x{};     ///< current coordinates (x[a][2] unused in 2D)
+  std::array<long long, mesh::kMaxFaceNodes> nodes{};  ///< global node numbers (label the derivative)
+  std::array<std::array<double, 3>, mesh::kMaxFaceNodes> x{};  ///< current coordinates (x[a][2] unused in 2D)
 };
 
 /// @brief d n / d x_{node, component}: one column of the normal's derivative.

@@ -19,6 +19,8 @@
 #include <array>
 #include <vector>
 
+#include "coulomb/mesh/CellType.hpp"
+
 namespace coulomb::contact {
 
 /// Which face size h_j a node's penalty takes (see above).
@@ -27,7 +29,7 @@ enum class PenaltySize { LocalFaces, PairMean };
 /// One slave face as the automatic penalty sees it.
 struct PenaltyFace {
   int numNodes = 0;                        ///< 2, 3 or 4
-  std::array<int, 4> nodes{-1, -1, -1, -1};  ///< node indices (0 … numNodes of the result - 1)
+  std::array<int, mesh::kMaxFaceNodes> nodes{};  ///< node indices (0 … numNodes of the result - 1)
   double diameter = 0;                     ///< largest distance between two of its nodes
   double modulus = 0;                      ///< Young's modulus of its element
 };

@@ -53,7 +53,7 @@ struct MassRule {
   static constexpr int n = FaceTraits<F>::nodes;
   static constexpr int pd = FaceTraits<F>::paramDim;
   static constexpr int points = F == mesh::FaceType::Line2 ? 2 : F == mesh::FaceType::Line3 ? 5
-                                 : F == mesh::FaceType::Tri3  ? 3 : 9;
+                                 : F == mesh::FaceType::Tri3  ? 3 : F == mesh::FaceType::Quad9 ? 16 : 9;
   std::array<double, points> weight{};
   std::array<NodalValues<F, double>, points> N{};
   std::array<std::array<std::array<double, pd>, n>, points> dN{};
@@ -74,6 +74,21 @@ MassRule<F> makeMassRule() {
       rule.N[q] = faceShapeValues<F, double>(xi);
       rule.dN[q] = faceShapeGradients<F, double>(xi);
     }
+  } else if constexpr (F == mesh::FaceType::Quad9) {
+    // 4 x 4 Gauss: exact for a parallelogram (N_j N_k of degree 4 per variable).
+    const double a = std::sqrt(3.0 / 7.0 - 2.0 / 7.0 * std::sqrt(6.0 / 5.0));
+    const double b = std::sqrt(3.0 / 7.0 + 2.0 / 7.0 * std::sqrt(6.0 / 5.0));
+    const double wa = (18.0 + std::sqrt(30.0)) / 36.0, wb = (18.0 - std::sqrt(30.0)) / 36.0;
+    const double gx[4] = {-b, -a, a, b};
+    const double gw[4] = {wb, wa, wa, wb};
+    for (int j = 0; j < 4; ++j)
+      for (int i = 0; i < 4; ++i) {
+        const int q = 4 * j + i;
+        const FacePoint<F, double> xi{gx[i], gx[j]};
+        rule.weight[q] = gw[i] * gw[j];
+        rule.N[q] = faceShapeValues<F, double>(xi);
+        rule.dN[q] = faceShapeGradients<F, double>(xi);
+      }
   } else if constexpr (F == mesh::FaceType::Quad4) {
     const double g = std::sqrt(0.6);
     const double gx[3] = {-g, 0.0, g};
@@ -194,6 +209,20 @@ COULOMB_CONTACT_DUAL_ALL_FACES(Fad3DTriTri)
 COULOMB_CONTACT_DUAL_ALL_FACES(Fad3DTriQuad)
 COULOMB_CONTACT_DUAL_ALL_FACES(Fad3DQuadTri)
 COULOMB_CONTACT_DUAL_ALL_FACES(Fad3DQuadQuad)
+// Quadratic faces: Line3 and Quad9 (2D: MortarSegmentCurved2D has its own
+// ring-weighted mass); the Sacado types of MortarSegmentQuadratic3D.
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Line3, double)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, double)
+using Fad3DQuad9Quad9 = SegmentFad3D<FaceType::Quad9, FaceType::Quad9>;
+using Fad3DQuad9Quad4 = SegmentFad3D<FaceType::Quad9, FaceType::Quad4>;
+using Fad3DQuad9Tri3 = SegmentFad3D<FaceType::Quad9, FaceType::Tri3>;
+using Fad3DQuad4Quad9 = SegmentFad3D<FaceType::Quad4, FaceType::Quad9>;
+using Fad3DTri3Quad9 = SegmentFad3D<FaceType::Tri3, FaceType::Quad9>;
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, Fad3DQuad9Quad9)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, Fad3DQuad9Quad4)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, Fad3DQuad9Tri3)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad4, Fad3DQuad4Quad9)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri3, Fad3DTri3Quad9)
 #undef COULOMB_CONTACT_DUAL_ALL_FACES
 #undef COULOMB_CONTACT_DUAL_INSTANTIATE
 

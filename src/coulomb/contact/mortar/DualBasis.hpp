@@ -10,6 +10,11 @@
 ///                              on a straight face)
 ///   Tri3  on the unit simplex   (0,0) (1,0) (0,1)
 ///   Quad4 on [-1,1]^2           (-1,-1) (1,-1) (1,1) (-1,1)
+///   Quad9 on [-1,1]^2           the Quad4 corners, mid-sides (0,-1) (1,0)
+///                              (0,1) (-1,0), centre (0,0): biquadratic; its
+///                              dual basis keeps D_j = int N_j > 0 (A/36,
+///                              A/9, 4A/9 on a parallelogram of area A), which
+///                              Quad8 and Tri6 do not (negative / zero at corners)
 ///
 /// Dual basis (thesis §4.3.3, "dual Lagrange multipliers"; Wohlmuth's
 /// biorthogonality): on a slave face gamma_e with standard shape functions N_k,
@@ -63,6 +68,19 @@ using NodalValues = std::array<T, FaceTraits<F>::nodes>;
 template <mesh::FaceType F, typename T>
 using NodalMatrix = std::array<std::array<T, FaceTraits<F>::nodes>, FaceTraits<F>::nodes>;
 
+/// Reference coordinates of the Quad9 nodes (Exodus: corners, mid-sides from
+/// the edge 0-1 on, centre).
+inline constexpr int kQuad9Node[9][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {0, -1}, {1, 0}, {0, 1}, {-1, 0}, {0, 0}};
+/// The 1D quadratic Lagrange function of the node at c in {-1, 0, 1}, and its derivative.
+template <typename X>
+inline X lagrange3(int c, const X& s) {
+  return c == 0 ? X(1.0 - s * s) : X(0.5 * s * (s + double(c)));
+}
+template <typename X>
+inline X lagrange3Derivative(int c, const X& s) {
+  return c == 0 ? X(-2.0 * s) : X(s + 0.5 * double(c));
+}
+
 /// @brief Standard (Lagrange) shape functions N_a(xi) of the reference face.
 template <mesh::FaceType F, typename X>
 inline NodalValues<F, X> faceShapeValues(const FacePoint<F, X>& xi) {
@@ -70,6 +88,10 @@ inline NodalValues<F, X> faceShapeValues(const FacePoint<F, X>& xi) {
     return {X(0.5 * (1.0 - xi[0])), X(0.5 * (1.0 + xi[0]))};
   } else if constexpr (F == mesh::FaceType::Line3) {
     return {X(0.5 * xi[0] * (xi[0] - 1.0)), X(0.5 * xi[0] * (xi[0] + 1.0)), X(1.0 - xi[0] * xi[0])};
+  } else if constexpr (F == mesh::FaceType::Quad9) {
+    NodalValues<F, X> N{};
+    for (int a = 0; a < 9; ++a) N[a] = lagrange3<X>(kQuad9Node[a][0], xi[0]) * lagrange3<X>(kQuad9Node[a][1], xi[1]);
+    return N;
   } else if constexpr (F == mesh::FaceType::Tri3) {
     return {X(1.0 - xi[0] - xi[1]), xi[0], xi[1]};
   } else {
@@ -87,6 +109,13 @@ inline std::array<std::array<X, FaceTraits<F>::paramDim>, FaceTraits<F>::nodes> 
     return {{{X(-0.5)}, {X(0.5)}}};
   } else if constexpr (F == mesh::FaceType::Line3) {
     return {{{X(xi[0] - 0.5)}, {X(xi[0] + 0.5)}, {X(-2.0 * xi[0])}}};
+  } else if constexpr (F == mesh::FaceType::Quad9) {
+    std::array<std::array<X, 2>, 9> g{};
+    for (int a = 0; a < 9; ++a) {
+      g[a][0] = lagrange3Derivative<X>(kQuad9Node[a][0], xi[0]) * lagrange3<X>(kQuad9Node[a][1], xi[1]);
+      g[a][1] = lagrange3<X>(kQuad9Node[a][0], xi[0]) * lagrange3Derivative<X>(kQuad9Node[a][1], xi[1]);
+    }
+    return g;
   } else if constexpr (F == mesh::FaceType::Tri3) {
     (void)xi;
     return {{{X(-1.0), X(-1.0)}, {X(1.0), X(0.0)}, {X(0.0), X(1.0)}}};
@@ -152,6 +181,7 @@ COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Line2)
 COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Line3)
 COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Tri3)
 COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Quad4)
+COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Quad9)
 #undef COULOMB_CONTACT_DUAL_EXTERN
 
 }  // namespace coulomb::contact

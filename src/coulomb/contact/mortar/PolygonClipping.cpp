@@ -227,6 +227,17 @@ COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DTriTri)
 COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DTriQuad)
 COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DQuadTri)
 COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DQuadQuad)
+// MortarSegmentQuadratic3D (pairs with a Quad9).
+using Fad3DQuad9Quad9 = SegmentFad3D<FaceType::Quad9, FaceType::Quad9>;
+using Fad3DQuad9Quad4 = SegmentFad3D<FaceType::Quad9, FaceType::Quad4>;
+using Fad3DQuad9Tri3 = SegmentFad3D<FaceType::Quad9, FaceType::Tri3>;
+using Fad3DQuad4Quad9 = SegmentFad3D<FaceType::Quad4, FaceType::Quad9>;
+using Fad3DTri3Quad9 = SegmentFad3D<FaceType::Tri3, FaceType::Quad9>;
+COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DQuad9Quad9)
+COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DQuad9Quad4)
+COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DQuad9Tri3)
+COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DQuad4Quad9)
+COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DTri3Quad9)
 #undef COULOMB_CONTACT_CLIP_INSTANTIATE
 
 }  // namespace coulomb::contact

@@ -1,0 +1,248 @@
+/// @file MortarSegmentQuadratic3D.cpp
+/// @brief Sub-facet mortar integration of 3D pairs with a Quad9 face (see the header).
+#include "coulomb/contact/mortar/MortarSegmentQuadratic3D.hpp"
+
+#include "coulomb/contact/mortar/MortarScalarTypes.hpp"
+
+#include <cmath>
+
+#include "coulomb/contact/mortar/AuxiliaryPlane.hpp"
+#include "coulomb/contact/mortar/PolygonClipping.hpp"
+#include "coulomb/core/Error.hpp"
+
+namespace coulomb::contact {
+namespace {
+
+using mesh::FaceType;
+using namespace plane;
+
+/// A linear piece of a face: its type (Tri3 or Quad4), the parent nodes at
+/// its corners and the parent coordinates of those corners.
+struct SubFacet {
+  FaceType type = FaceType::Quad4;
+  int count = 4;
+  std::array<int, 4> node{};
+  std::array<std::array<double, 2>, 4> corner{};
+};
+
+template <FaceType F>
+std::vector<SubFacet> subFacets() {
+  if constexpr (F == FaceType::Tri3) {
+    return {SubFacet{FaceType::Tri3, 3, {0, 1, 2, -1}, {{{0, 0}, {1, 0}, {0, 1}, {0, 0}}}}};
+  } else if constexpr (F == FaceType::Quad4) {
+    return {SubFacet{FaceType::Quad4, 4, {0, 1, 2, 3}, {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}}}};
+  } else {
+    static_assert(F == FaceType::Quad9, "sub-facets of Tri3, Quad4 and Quad9 faces");
+    std::vector<SubFacet> out;
+    for (const std::array<int, 4> q : {std::array<int, 4>{0, 4, 8, 7}, {4, 1, 5, 8}, {8, 5, 2, 6}, {7, 8, 6, 3}}) {
+      SubFacet f;
+      f.node = q;
+      for (int c = 0; c < 4; ++c) f.corner[c] = {double(kQuad9Node[q[c]][0]), double(kQuad9Node[q[c]][1])};
+      out.push_back(f);
+    }
+    return out;
+  }
+}
+
+/// A sub-facet projected on the plane and its inverse map: the coordinates
+/// of the plane point p in the parent face.
+template <typename T>
+struct PlanePiece {
+  const SubFacet* facet = nullptr;
+  std::array<Point2<T>, 4> p{};
+  Polygon2<T> polygon;
+
+  template <FaceType F>
+  FacePoint<F, T> parentPoint(const Point2<T>& q) const {
+    std::array<T, 2> local{};
+    std::array<T, 4> weight{};
+    if (facet->type == FaceType::Tri3) {
+      const PlaneNodes<FaceType::Tri3, T> nodes{p[0], p[1], p[2]};
+      const auto xi = invertPlaneMap<FaceType::Tri3, T>(nodes, q);
+      weight = {T(1.0 - xi[0] - xi[1]), xi[0], xi[1], T(0.0)};
+    } else {
+      const PlaneNodes<FaceType::Quad4, T> nodes{p[0], p[1], p[2], p[3]};
+      weight = faceShapeValues<FaceType::Quad4, T>(invertPlaneMap<FaceType::Quad4, T>(nodes, q));
+    }
+    for (int i = 0; i < 2; ++i) {
+      local[i] = 0.0;
+      for (int c = 0; c < facet->count; ++c) local[i] += weight[c] * facet->corner[c][i];
+    }
+    return {local[0], local[1]};
+  }
+};
+
+}  // namespace
+
+template <FaceType S, FaceType Mf, typename T>
+MortarSegment3D<S, Mf, T> integrateQuadraticSegment3D(const FaceNodes<S, T>& xs, const FaceNodes<S, T>& ns,
+                                                      const FaceNodes<Mf, T>& xm, double relativeTolerance) {
+  using std::sqrt;
+  constexpr int nS = FaceTraits<S>::nodes;
+  constexpr int nM = FaceTraits<Mf>::nodes;
+  MortarSegment3D<S, Mf, T> out;
+  for (int j = 0; j < nS; ++j) {
+    out.D[j] = 0.0;
+    out.gap[j] = 0.0;
+    for (int l = 0; l < nM; ++l) out.M[j][l] = 0.0;
+  }
+  out.area = 0.0;
+  static const std::vector<SubFacet> slaveFacets = subFacets<S>(), masterFacets = subFacets<Mf>();
+  const NodalMatrix<S, T> A = dualCoefficients<S, T>(xs);
+  const TriangleRule7& rule = triangleRule7();
+
+  for (const SubFacet& fs : slaveFacets) {
+    // The auxiliary plane of the slave sub-facet (MortarSegment3D.hpp, step 1).
+    Vec3<T> x0{T(0.0), T(0.0), T(0.0)};
+    for (int c = 0; c < fs.count; ++c)
+      for (int i = 0; i < 3; ++i) x0[i] += xs[fs.node[c]][i] / double(fs.count);
+    const auto& q = fs.node;
+    const Vec3<T> v = fs.type == FaceType::Tri3 ? cross(sub(xs[q[1]], xs[q[0]]), sub(xs[q[2]], xs[q[0]]))
+                                                 : cross(sub(xs[q[2]], xs[q[0]]), sub(xs[q[3]], xs[q[1]]));
+    const T vNorm = sqrt(dot(v, v));
+    if (!(valueOf(vNorm) > 0.0)) continue;
+    const Vec3<T> n0{T(v[0] / vNorm), T(v[1] / vNorm), T(v[2] / vNorm)};
+    const Vec3<T> t = sub(xs[q[1]], xs[q[0]]);
+    const T tn = dot(t, n0);
+    Vec3<T> e1{T(t[0] - tn * n0[0]), T(t[1] - tn * n0[1]), T(t[2] - tn * n0[2])};
+    const T e1Norm = sqrt(dot(e1, e1));
+    for (int i = 0; i < 3; ++i) e1[i] /= e1Norm;
+    const Vec3<T> e2 = cross(n0, e1);
+    auto toPlane = [&](const std::array<T, 3>& x) {
+      const Vec3<T> r = sub(x, x0);
+      return Point2<T>{dot(r, e1), dot(r, e2)};
+    };
+    PlanePiece<T> slave;
+    slave.facet = &fs;
+    for (int c = 0; c < fs.count; ++c) {
+      slave.p[c] = toPlane(xs[fs.node[c]]);
+      slave.polygon.push(slave.p[c]);
+    }
+    const double slaveArea = valueOf(signedArea(slave.polygon));
+    if (!(slaveArea > 0.0)) continue;
+    if (fs.type == FaceType::Quad4) {
+      const PlaneNodes<FaceType::Quad4, T> quad{slave.p[0], slave.p[1], slave.p[2], slave.p[3]};
+      COULOMB_REQUIRE(reflexVertex(quad, relativeTolerance * slaveArea) == -1,
+                      "mortar integration: a slave face is not convex on its auxiliary plane (distorted element)");
+    }
+    const double tolerance = relativeTolerance * std::sqrt(slaveArea);
+    for (const SubFacet& fm : masterFacets) {
+      PlanePiece<T> master;
+      master.facet = &fm;
+      for (int c = 0; c < fm.count; ++c) {
+        master.p[c] = toPlane(xm[fm.node[c]]);
+        master.polygon.push(master.p[c]);
+      }
+      if (!(std::abs(valueOf(signedArea(master.polygon))) > relativeTolerance * slaveArea)) continue;
+      if (fm.type == FaceType::Quad4) {
+        const PlaneNodes<FaceType::Quad4, T> quad{master.p[0], master.p[1], master.p[2], master.p[3]};
+        COULOMB_REQUIRE(reflexVertex(quad, relativeTolerance * slaveArea) == -1,
+                        "mortar integration: a master face is not convex on a slave face's auxiliary plane");
+      }
+      Polygon2<T> masterPolygon = master.polygon;
+      makeCounterClockwise(masterPolygon);
+      const Polygon2<T> clip = clipConvexPolygon(masterPolygon, slave.polygon, tolerance);
+      if (clip.size < 3 || !(valueOf(signedArea(clip)) > relativeTolerance * slaveArea)) continue;
+      out.contributes = true;
+      out.polygonVertices += clip.size;
+      const Point2<T> centre = areaCentroid(clip);
+      for (int c = 0; c < clip.size; ++c) {
+        const Point2<T>& q0 = centre;
+        const Point2<T>& q1 = clip.vertex[c];
+        const Point2<T>& q2 = clip.vertex[(c + 1) % clip.size];
+        const T cellArea = 0.5 * ((q1[0] - q0[0]) * (q2[1] - q0[1]) - (q1[1] - q0[1]) * (q2[0] - q0[0]));
+        for (int g = 0; g < 7; ++g) {
+          const std::array<double, 3>& L = rule.L[g];
+          const Point2<T> p{T(L[0] * q0[0] + L[1] * q1[0] + L[2] * q2[0]),
+                            T(L[0] * q0[1] + L[1] * q1[1] + L[2] * q2[1])};
+          const FacePoint<S, T> xi1 = slave.template parentPoint<S>(p);
+          const FacePoint<Mf, T> xi2 = master.template parentPoint<Mf>(p);
+          const NodalValues<S, T> N1 = faceShapeValues<S, T>(xi1);
+          const NodalValues<S, T> phi = dualShapeValues<S, T, T>(A, xi1);
+          const NodalValues<Mf, T> N2 = faceShapeValues<Mf, T>(xi2);
+          const Vec3<T> x1 = facePoint<S, T, T>(xs, xi1);
+          const Vec3<T> x2 = facePoint<Mf, T, T>(xm, xi2);
+          Vec3<T> n{T(0.0), T(0.0), T(0.0)};
+          for (int a = 0; a < nS; ++a)
+            for (int i = 0; i < 3; ++i) n[i] += N1[a] * ns[a][i];
+          const T gn = dot(sub(x2, x1), n) / sqrt(dot(n, n));
+          T dA = rule.w[g] * cellArea;
+          if (fs.type == FaceType::Quad4) {
+            // The sub-facet's measure over the plane's (MortarSegment3D.hpp, step 6).
+            const PlaneNodes<FaceType::Quad4, T> quad{slave.p[0], slave.p[1], slave.p[2], slave.p[3]};
+            const auto grad = faceShapeGradients<FaceType::Quad4, T>(invertPlaneMap<FaceType::Quad4, T>(quad, p));
+            Vec3<T> tx{T(0.0), T(0.0), T(0.0)}, ty{T(0.0), T(0.0), T(0.0)};
+            for (int a = 0; a < 4; ++a)
+              for (int i = 0; i < 3; ++i) {
+                tx[i] += grad[a][0] * xs[fs.node[a]][i];
+                ty[i] += grad[a][1] * xs[fs.node[a]][i];
+              }
+            const Vec3<T> nx = cross(tx, ty);
+            dA *= sqrt(dot(nx, nx)) / dot(nx, n0);
+          }
+          for (int j = 0; j < nS; ++j) {
+            const T pw = phi[j] * dA;
+            out.D[j] += pw;
+            out.gap[j] += pw * gn;
+            for (int l = 0; l < nM; ++l) out.M[j][l] += pw * N2[l];
+          }
+          out.area += dA;
+        }
+      }
+    }
+  }
+  return out;
+}
+
+template <FaceType S, FaceType Mf>
+MortarSegment3DLinearization<S, Mf> linearizeQuadraticSegment3D(const FaceNodes<S, double>& xs,
+                                                                const FaceNodes<S, double>& ns,
+                                                                const FaceNodes<Mf, double>& xm,
+                                                                double relativeTolerance) {
+  constexpr int nS = FaceTraits<S>::nodes;
+  constexpr int nM = FaceTraits<Mf>::nodes;
+  constexpr int nI = segment3DInputs<S, Mf>;
+  using Fad = SegmentFad3D<S, Mf>;
+  FaceNodes<S, Fad> fxs, fns;
+  FaceNodes<Mf, Fad> fxm;
+  for (int a = 0; a < nS; ++a)
+    for (int i = 0; i < 3; ++i) {
+      fxs[a][i] = Fad(nI, 3 * a + i, xs[a][i]);
+      fns[a][i] = Fad(nI, 3 * nS + 3 * a + i, ns[a][i]);
+    }
+  for (int a = 0; a < nM; ++a)
+    for (int i = 0; i < 3; ++i) fxm[a][i] = Fad(nI, 6 * nS + 3 * a + i, xm[a][i]);
+  const MortarSegment3D<S, Mf, Fad> r = integrateQuadraticSegment3D<S, Mf, Fad>(fxs, fns, fxm, relativeTolerance);
+  MortarSegment3DLinearization<S, Mf> lin;
+  lin.value.contributes = r.contributes;
+  lin.value.polygonVertices = r.polygonVertices;
+  lin.value.area = r.area.val();
+  for (int i = 0; i < nI; ++i) lin.dArea[i] = r.area.dx(i);
+  for (int j = 0; j < nS; ++j) {
+    lin.value.D[j] = r.D[j].val();
+    lin.value.gap[j] = r.gap[j].val();
+    for (int i = 0; i < nI; ++i) {
+      lin.dD[j][i] = r.D[j].dx(i);
+      lin.dGap[j][i] = r.gap[j].dx(i);
+    }
+    for (int l = 0; l < nM; ++l) {
+      lin.value.M[j][l] = r.M[j][l].val();
+      for (int i = 0; i < nI; ++i) lin.dM[j][l][i] = r.M[j][l].dx(i);
+    }
+  }
+  return lin;
+}
+
+#define COULOMB_QUADRATIC_3D_INSTANTIATE(S, Mf)                                                                     \
+  template MortarSegment3D<S, Mf, double> integrateQuadraticSegment3D<S, Mf, double>(                             \
+      const FaceNodes<S, double>&, const FaceNodes<S, double>&, const FaceNodes<Mf, double>&, double);              \
+  template MortarSegment3DLinearization<S, Mf> linearizeQuadraticSegment3D<S, Mf>(                                \
+      const FaceNodes<S, double>&, const FaceNodes<S, double>&, const FaceNodes<Mf, double>&, double);
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad9, FaceType::Quad9)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad9, FaceType::Quad4)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad9, FaceType::Tri3)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad4, FaceType::Quad9)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Tri3, FaceType::Quad9)
+#undef COULOMB_QUADRATIC_3D_INSTANTIATE
+
+}  // namespace coulomb::contact
