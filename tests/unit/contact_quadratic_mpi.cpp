@@ -53,6 +53,46 @@ TEST(ContactPatch, QuadraticLine3FacesTransmitUniformPressure) {
   }
 }
 
+// The QUAD9 patch as an axisymmetric section (x = r; the LINE3 dual basis
+// biorthogonal in the ring measure 2 pi r ds, lineMass): stacked discs in
+// uniaxial stress, u_z = -delta z, u_r = nu delta r, to round-off, the slave
+// nodes at the same pressure, contact force = reaction = pi R^2 E delta.
+// The slave node on the axis has no ring measure with LINE3 faces
+// (int N_0 2 pi r ds = 0 for the quadratic corner function when r_0 = 0),
+// so it carries no multiplier: 14 of the 15 nodes are in contact.
+TEST(ContactPatch, QuadraticLine3FacesAxisymmetric) {
+  ShippedDeck deck("contact_patch_2d", "contact_patch2d.e");
+  deck.replace(shippedMesh("contact_patch2d.e"), shippedMesh("contact_patch2d_quad9.e"));
+  const std::string contact = "<ParameterList name=\"Contact\">";  // to round-off, as the 3D patch
+  deck.replace(contact, "<ParameterList name=\"Newton\"><Parameter name=\"Relative Tolerance\" type=\"double\" "
+                        "value=\"1e-12\"/><Parameter name=\"Linear Tolerance\" type=\"string\" value=\"Fixed\"/>"
+                        "</ParameterList>\n  " + contact);
+  const std::string mesh = "<ParameterList name=\"Mesh\">";
+  deck.replace(mesh, "<ParameterList name=\"Problem\"><Parameter name=\"Plane Assumption\" type=\"string\" "
+                     "value=\"Axisymmetric\"/></ParameterList>\n  " + mesh);
+  auto run = runDeckText("contact_patch_axisymmetric_quad9", deck.text);
+  const double E = 210000, nu = 0.3, delta = 0.01;
+  double error = 0;
+  forOwnedNodes(*run.simulation, [&](long long, const double* X, const double* u) {
+    error = std::max({error, std::abs(u[1] + delta * X[1]), std::abs(u[0] - nu * delta * X[0])});
+  });
+  EXPECT_LT(globalMax(error), 1e-9 * delta);
+  if (worldComm()->getRank() != 0) return;
+  const double sigma = E * delta, force = M_PI * sigma;
+  const double current = sigma / ((1 + nu * delta) * (1 + nu * delta));  // per current area
+  const auto& pressure = lastNodal(run.results, "contact_pressure");
+  const auto& state = lastNodal(run.results, "contact_state");
+  int active = 0;
+  for (std::size_t i = 0; i < state.size(); ++i)
+    if (state[i] > 0.5) {
+      ++active;
+      EXPECT_NEAR(pressure[i], current, 1e-8 * current) << "node " << i + 1;
+    }
+  EXPECT_EQ(active, 14);
+  EXPECT_NEAR(lastGlobal(run.results, "contact_force_punch_y"), force, 1e-8 * force);
+  EXPECT_NEAR(lastGlobal(run.results, "reaction_top_y"), -force, 1e-8 * force);
+}
+
 // xml/contact_patch_3d.xml on its HEX27 mesh (QUAD9 contact faces,
 // segmented on sub-facets, MortarSegmentQuadratic3D.hpp; 4 x 4 slave faces
 // on 3 x 3 master faces): the uniaxial stress E delta, u_z = -delta z, u_x =
