@@ -67,9 +67,13 @@ int main(int argc, char** argv) {
   if (child == 0) _exit(convert(input, output));
   int status = 0;
   while (waitpid(child, &status, 0) < 0)
-    if (errno != EINTR) return 1;
+    if (errno != EINTR) {
+      std::cerr << "coulomb_gmsh2exo: error: lost the conversion of '" << input << "' (waitpid failed)\n";
+      return 1;
+    }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return 0;
+  std::remove(output.c_str());  // no output that looks complete after a failure
   if (WIFEXITED(status)) return WEXITSTATUS(status);
-  std::remove(output.c_str());
   std::cerr << "coulomb_gmsh2exo: error: gmsh crashed (signal " << WTERMSIG(status) << ") reading '" << input
             << "': the file is damaged or not a mesh gmsh can read\n";
   return 1;

@@ -39,6 +39,15 @@ void ShippedDeck::setNewtonFlag(const std::string& name, bool value) {
                        (value ? "true" : "false") + "\"/></ParameterList>\n");
 }
 
+void ShippedDeck::solveToRoundOff() {
+  ASSERT_EQ(text.find("name=\"Newton\""), std::string::npos) << "the deck has a Newton list already";
+  const auto end = text.rfind("</ParameterList>");
+  ASSERT_NE(end, std::string::npos);
+  text.insert(end, "<ParameterList name=\"Newton\"><Parameter name=\"Relative Tolerance\" type=\"double\" "
+                   "value=\"1e-12\"/><Parameter name=\"Linear Tolerance\" type=\"string\" value=\"Fixed\"/>"
+                   "</ParameterList>\n");
+}
+
 void ShippedDeck::replace(const std::string& from, const std::string& to) {
   const auto at = text.find(from);
   EXPECT_NE(at, std::string::npos) << from;
@@ -163,6 +172,20 @@ std::string assemblyDeck(const std::string& mesh, const std::vector<std::string>
   d << "</ParameterList></ParameterList><ParameterList name=\"Load Stepping\">"
        "<Parameter name=\"Number of Steps\" type=\"int\" value=\"2\"/></ParameterList></ParameterList>";
   return d.str();
+}
+
+void expectUniformPressure(const ContactRun& run, double current, int active, const std::string& axis, double force) {
+  const auto& pressure = lastNodal(run.results, "contact_pressure");
+  const auto& state = lastNodal(run.results, "contact_state");
+  int found = 0;
+  for (std::size_t i = 0; i < state.size(); ++i)
+    if (state[i] > 0.5) {
+      ++found;
+      EXPECT_NEAR(pressure[i], current, 1e-8 * current);
+    }
+  EXPECT_EQ(found, active);
+  EXPECT_NEAR(lastGlobal(run.results, "contact_force_punch_" + axis), force, 1e-8 * force);
+  EXPECT_NEAR(lastGlobal(run.results, "reaction_top_" + axis), -force, 1e-8 * force);
 }
 
 }  // namespace coulomb::test

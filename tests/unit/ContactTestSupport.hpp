@@ -27,6 +27,10 @@ struct ShippedDeck {
   /// measure the tangent, not the adaptive Krylov tolerance. The deck must not
   /// have a "Newton" list already.
   void fixLinearTolerance();
+  /// Adds a "Newton" list for a check to round-off: 'Relative Tolerance' =
+  /// 1e-12 of the force scale, 'Linear Tolerance' = Fixed. The deck must not
+  /// have a "Newton" list already.
+  void solveToRoundOff();
   /// Adds 'Newton/<name>' = `value` (bool). The deck must not have a "Newton" list already.
   void setNewtonFlag(const std::string& name, bool value);
 };
@@ -72,6 +76,11 @@ struct AssemblyPair {
 std::string assemblyDeck(const std::string& mesh, const std::vector<std::string>& blocks,
                          const std::vector<std::pair<std::string, std::string>>& fixed, double delta,
                          const std::vector<AssemblyPair>& pairs, const std::string& axis = "y");
+
+/// The patch tests' contact checks (rank 0, pair `punch`, load on `top`):
+/// `active` nodes in contact, each at the pressure `current` (to 1e-8 of
+/// it), and the contact force and the reaction along `axis` equal to `force`.
+void expectUniformPressure(const ContactRun& run, double current, int active, const std::string& axis, double force);
 
 double lastGlobal(const io::ExodusResults& r, const std::string& name);
 const std::vector<double>& lastNodal(const io::ExodusResults& r, const std::string& name);

@@ -97,23 +97,6 @@ int expectSuperlinearOnceSetIsFixed(const solver::RunSummary& summary, double mi
 
 }  // namespace
 
-/// The patch tests' contact checks (rank 0, pair `punch`, load on `top`):
-/// `active` nodes in contact, each at the pressure `current` (to 1e-8 of
-/// it), and the contact force and the reaction along `axis` equal to `force`.
-void expectUniformPressure(const ContactRun& run, double current, int active, const std::string& axis, double force) {
-  const auto& pressure = lastNodal(run.results, "contact_pressure");
-  const auto& state = lastNodal(run.results, "contact_state");
-  int found = 0;
-  for (std::size_t i = 0; i < state.size(); ++i)
-    if (state[i] > 0.5) {
-      ++found;
-      EXPECT_NEAR(pressure[i], current, 1e-8 * current);
-    }
-  EXPECT_EQ(found, active);
-  EXPECT_NEAR(lastGlobal(run.results, "contact_force_punch_" + axis), force, 1e-8 * force);
-  EXPECT_NEAR(lastGlobal(run.results, "reaction_top_" + axis), -force, 1e-8 * force);
-}
-
 TEST(ContactPatch, TwoDimensionalNonMatchingTransmitsUniformPressure) {
   auto run = runDeck("contact_patch_2d");
   const double E = 210000, nu = 0.3, delta = 0.01;

@@ -89,6 +89,26 @@ TEST(Mortar3DQuadratic, PlaneParallelFacesGiveThePatchIdentities) {
         1.3 * 1.3 + 0.05 * 1.3 * 1.3);
 }
 
+// A master quadrilateral that is not convex (a dart inside the slave) is
+// integrated as the two triangles either side of its reflex diagonal, as the
+// linear kernel does: the overlap is its area (0.96), the identities hold.
+TEST(Mortar3DQuadratic, NonConvexMasterIsTwoTriangles) {
+  const double g = 0.1;
+  const Q9 slave = quad9(0.0, 0.0, 2.0, 2.0, 0.0);
+  const Q4 dart{{{0.2, 1.8, g}, {0.8, 0.8, g}, {1.8, 0.2, g}, {0.2, 0.2, g}}};  // facing the slave
+  const auto r = integrateQuadraticSegment3D<FaceType::Quad9, FaceType::Quad4, double>(slave, up(), dart, 1e-12);
+  ASSERT_TRUE(r.contributes);
+  double sumD = 0;
+  for (int j = 0; j < 9; ++j) {
+    double sumM = 0;
+    for (double m : r.M[j]) sumM += m;
+    EXPECT_NEAR(sumM, r.D[j], 1e-12) << j;
+    EXPECT_NEAR(r.gap[j], g * r.D[j], 1e-12) << j;
+    sumD += r.D[j];
+  }
+  EXPECT_NEAR(sumD, 0.96, 1e-12);
+}
+
 /// Central differences of every output against every input (h = 1e-6): the
 /// Sacado derivatives match to 1e-7.
 template <FaceType S, FaceType Mf>

@@ -38,18 +38,7 @@ TEST(ContactPatch, QuadraticLine3FacesTransmitUniformPressure) {
     });
     EXPECT_LT(globalMax(error), 1e-9 * delta);
     EXPECT_LE(run.summary.newtonIterations, 4);
-    if (worldComm()->getRank() != 0) continue;
-    const auto& pressure = lastNodal(run.results, "contact_pressure");
-    const auto& state = lastNodal(run.results, "contact_state");
-    int active = 0;
-    for (std::size_t i = 0; i < state.size(); ++i)
-      if (state[i] > 0.5) {
-        ++active;
-        EXPECT_NEAR(pressure[i], current, 1e-8 * current) << "node " << i + 1;
-      }
-    EXPECT_EQ(active, 15);  // 7 LINE3 faces
-    EXPECT_NEAR(lastGlobal(run.results, "contact_force_punch_y"), sigma, 1e-8 * sigma);
-    EXPECT_NEAR(lastGlobal(run.results, "reaction_top_y"), -sigma, 1e-8 * sigma);
+    if (worldComm()->getRank() == 0) expectUniformPressure(run, current, 15, "y", sigma);  // 7 LINE3 faces
   }
 }
 
@@ -63,10 +52,7 @@ TEST(ContactPatch, QuadraticLine3FacesTransmitUniformPressure) {
 TEST(ContactPatch, QuadraticLine3FacesAxisymmetric) {
   ShippedDeck deck("contact_patch_2d", "contact_patch2d.e");
   deck.replace(shippedMesh("contact_patch2d.e"), shippedMesh("contact_patch2d_quad9.e"));
-  const std::string contact = "<ParameterList name=\"Contact\">";  // to round-off, as the 3D patch
-  deck.replace(contact, "<ParameterList name=\"Newton\"><Parameter name=\"Relative Tolerance\" type=\"double\" "
-                        "value=\"1e-12\"/><Parameter name=\"Linear Tolerance\" type=\"string\" value=\"Fixed\"/>"
-                        "</ParameterList>\n  " + contact);
+  deck.solveToRoundOff();
   const std::string mesh = "<ParameterList name=\"Mesh\">";
   deck.replace(mesh, "<ParameterList name=\"Problem\"><Parameter name=\"Plane Assumption\" type=\"string\" "
                      "value=\"Axisymmetric\"/></ParameterList>\n  " + mesh);
@@ -80,17 +66,7 @@ TEST(ContactPatch, QuadraticLine3FacesAxisymmetric) {
   if (worldComm()->getRank() != 0) return;
   const double sigma = E * delta, force = M_PI * sigma;
   const double current = sigma / ((1 + nu * delta) * (1 + nu * delta));  // per current area
-  const auto& pressure = lastNodal(run.results, "contact_pressure");
-  const auto& state = lastNodal(run.results, "contact_state");
-  int active = 0;
-  for (std::size_t i = 0; i < state.size(); ++i)
-    if (state[i] > 0.5) {
-      ++active;
-      EXPECT_NEAR(pressure[i], current, 1e-8 * current) << "node " << i + 1;
-    }
-  EXPECT_EQ(active, 14);
-  EXPECT_NEAR(lastGlobal(run.results, "contact_force_punch_y"), force, 1e-8 * force);
-  EXPECT_NEAR(lastGlobal(run.results, "reaction_top_y"), -force, 1e-8 * force);
+  expectUniformPressure(run, current, 14, "y", force);
 }
 
 // xml/contact_patch_3d.xml on its HEX27 mesh (QUAD9 contact faces,
@@ -101,11 +77,7 @@ TEST(ContactPatch, QuadraticLine3FacesAxisymmetric) {
 TEST(ContactPatch, QuadraticQuad9FacesTransmitUniformPressure) {
   ShippedDeck deck("contact_patch_3d", "contact_patch3d.e");
   deck.replace(shippedMesh("contact_patch3d.e"), shippedMesh("contact_patch3d_hex27.e"));
-  // To round-off: Newton to 1e-12 of the force scale, each linear solve to 1e-10.
-  const std::string contact = "<ParameterList name=\"Contact\">";
-  deck.replace(contact, "<ParameterList name=\"Newton\"><Parameter name=\"Relative Tolerance\" type=\"double\" "
-                        "value=\"1e-12\"/><Parameter name=\"Linear Tolerance\" type=\"string\" value=\"Fixed\"/>"
-                        "</ParameterList>\n  " + contact);
+  deck.solveToRoundOff();
   auto run = runDeckText("contact_patch_3d_hex27", deck.text);
   const double E = 210000, nu = 0.3, delta = 0.01;
   double error = 0;
@@ -118,17 +90,7 @@ TEST(ContactPatch, QuadraticQuad9FacesTransmitUniformPressure) {
   if (worldComm()->getRank() != 0) return;
   const double sigma = E * delta;
   const double current = sigma / ((1 + nu * delta) * (1 + nu * delta));  // per current area
-  const auto& pressure = lastNodal(run.results, "contact_pressure");
-  const auto& state = lastNodal(run.results, "contact_state");
-  int active = 0;
-  for (std::size_t i = 0; i < state.size(); ++i)
-    if (state[i] > 0.5) {
-      ++active;
-      EXPECT_NEAR(pressure[i], current, 1e-8 * current) << "node " << i + 1;
-    }
-  EXPECT_EQ(active, 81);
-  EXPECT_NEAR(lastGlobal(run.results, "contact_force_punch_z"), sigma, 1e-8 * sigma);
-  EXPECT_NEAR(lastGlobal(run.results, "reaction_top_z"), -sigma, 1e-8 * sigma);
+  expectUniformPressure(run, current, 81, "z", sigma);
 }
 
 // Perfect stick below the cone (contact_friction_decks_mpi.cpp,

@@ -54,10 +54,9 @@ PairChaining::PairChaining(const std::vector<std::unique_ptr<ContactPair>>& pair
     std::set<long long> shared;
     for (long long node : pairs[p]->interface().slaveNodes())
       for (std::size_t q = 0; q < n; ++q)
-        if (std::binary_search(masters[q].begin(), masters[q].end(), node)) {
-          COULOMB_REQUIRE(q != p, "Contact/Pairs/" << pairs[p]->settings().name << ": node " << node + 1
-                                                   << " is both a slave and a master node of the pair; its "
-                                                      "condensed rows cannot carry both (use Formulation = Penalty)");
+        // A node of the pair's own master faces is a master node only
+        // (ContactPair::markMasterOnlyNodes): no chain.
+        if (q != p && std::binary_search(masters[q].begin(), masters[q].end(), node)) {
           before[p].insert(q);
           shared.insert(node);
         }
@@ -72,11 +71,21 @@ PairChaining::PairChaining(const std::vector<std::unique_ptr<ContactPair>>& pair
       if (!done[p] && std::all_of(before[p].begin(), before[p].end(), [&](std::size_t q) { return done[q] != 0; }))
         next = p;
     if (next == n) {
+      // Every undone pair waits on another undone one: walk back until a
+      // pair repeats, then p and q are on the loop.
       std::size_t p = 0;
       while (done[p]) ++p;
-      std::size_t q = *before[p].begin();
-      for (std::size_t r : before[p])
-        if (!done[r]) q = r;
+      std::vector<char> seen(n, 0);
+      auto waitsOn = [&](std::size_t r) {
+        for (std::size_t w : before[r])
+          if (!done[w]) return w;
+        return r;
+      };
+      while (!seen[p]) {
+        seen[p] = 1;
+        p = waitsOn(p);
+      }
+      const std::size_t q = waitsOn(p);
       throw Error("Contact/Pairs/" + pairs[p]->settings().name + " and Contact/Pairs/" + pairs[q]->settings().name +
                   ": each has slave nodes that are master nodes of the other (through a chain of pairs); the condensed "
                   "rows need an order (use Formulation = Penalty for one of them)");

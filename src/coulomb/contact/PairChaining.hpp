@@ -38,8 +38,8 @@ class ContactPair;
 class PairChaining {
 public:
   /// Not collective (every rank holds every pair's nodes). Throws
-  /// coulomb::Error naming the pairs and a node when the chain has a cycle
-  /// (a condensed pair whose master node is its own slave node included).
+  /// coulomb::Error naming two pairs of a cycle (a node of a pair's own
+  /// master faces is no link: ContactPair::markMasterOnlyNodes).
   explicit PairChaining(const std::vector<std::unique_ptr<ContactPair>>& pairs);
 
   /// The order in which to update the pairs (indices into pairs).

@@ -65,6 +65,7 @@ std::vector<ContactFace> collectFaces(const mesh::Mesh& mesh, const SetList& set
   for (std::size_t index : sets.indices) {
     const mesh::SideSet& set = global.sideSets[index];
     const std::string shown = mesh::displayName(set.name, "sideset", set.id);
+    COULOMB_REQUIRE(!set.elements.empty(), what << ": " << role << " side set '" << shown << "' is empty");
     for (std::size_t i = 0; i < set.elements.size(); ++i) {
       ContactFace face;
       face.element = set.elements[i];

@@ -141,101 +141,88 @@ struct PairContext {
   std::map<long long, NodalMortarEntry>& out;
 };
 
-void pair2D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
-  using F = std::integral_constant<FaceType, FaceType::Line2>;
-  const auto xs = faceCoordinates<F::value>(s, p.x);
-  const auto ns = faceNormals<F::value>(s, p.contact, p.normals);
-  const auto xm = faceCoordinates<F::value>(m, p.x);
-  // Most candidate pairs of a search do not overlap: find out with plain
-  // doubles before paying for the derivatives (Sacado, 8-36 times the work).
-  const bool ring = p.contact.axisymmetric();
-  if (p.withDerivatives && integrateSegment2D<double>(xs, ns, xm, p.tolerance, ring).contributes) {
-    const MortarSegment2DLinearization lin = linearizeSegment2D(xs, ns, xm, p.tolerance, ring);
-    if (!lin.value.contributes) return;
-    const InputChain chain = buildChain(2, s, m, p.contact, p.normals);
-    accumulate(lin.value, &lin, &chain, s, m, p.out);
-  } else if (!p.withDerivatives) {
-    const MortarSegment2D<double> value = integrateSegment2D<double>(xs, ns, xm, p.tolerance, ring);
-    if (!value.contributes) return;
-    accumulate(value, static_cast<const MortarSegment2DLinearization*>(nullptr), nullptr, s, m, p.out);
-  }
-}
-
-/// A 2D pair with a quadratic Line3 face (MortarSegmentCurved2D.hpp).
-template <FaceType S, FaceType Mf>
-void curvedPair2D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
+/// One pair with the segment kernel `integrate(xs, ns, xm)` (doubles) and
+/// its `linearize(xs, ns, xm)` (values and derivatives). Most candidate
+/// pairs of a search do not overlap: the plain doubles find out before the
+/// derivatives are paid for (Sacado, 8-80 times the work).
+template <FaceType S, FaceType Mf, class Integrate, class Linearize>
+void integrateWith(const PairContext& p, const ContactFace& s, const ContactFace& m, Integrate&& integrate,
+                   Linearize&& linearize) {
   const auto xs = faceCoordinates<S>(s, p.x);
   const auto ns = faceNormals<S>(s, p.contact, p.normals);
   const auto xm = faceCoordinates<Mf>(m, p.x);
-  const bool ring = p.contact.axisymmetric();
-  if (p.withDerivatives && integrateCurvedSegment2D<S, Mf, double>(xs, ns, xm, p.tolerance, ring).contributes) {
-    const auto lin = linearizeCurvedSegment2D<S, Mf>(xs, ns, xm, p.tolerance, ring);
+  using Lin = decltype(linearize(xs, ns, xm));
+  if (p.withDerivatives && integrate(xs, ns, xm).contributes) {
+    const Lin lin = linearize(xs, ns, xm);
     if (!lin.value.contributes) return;
-    const InputChain chain = buildChain(2, s, m, p.contact, p.normals);
+    const InputChain chain = buildChain(FaceTraits<S>::spaceDim, s, m, p.contact, p.normals);
     accumulate(lin.value, &lin, &chain, s, m, p.out);
   } else if (!p.withDerivatives) {
-    const auto value = integrateCurvedSegment2D<S, Mf, double>(xs, ns, xm, p.tolerance, ring);
+    const auto value = integrate(xs, ns, xm);
     if (!value.contributes) return;
-    accumulate(value, static_cast<const MortarSegmentCurved2DLinearization<S, Mf>*>(nullptr), nullptr, s, m, p.out);
+    accumulate(value, static_cast<const Lin*>(nullptr), nullptr, s, m, p.out);
   }
 }
 
+/// A 2D pair: the closed-form Line2 kernel, or the general one when a face
+/// is a quadratic Line3 (MortarSegmentCurved2D.hpp).
+template <FaceType S, FaceType Mf>
+void pair2D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
+  const bool ring = p.contact.axisymmetric();
+  if constexpr (S == FaceType::Line2 && Mf == FaceType::Line2)
+    integrateWith<S, Mf>(
+        p, s, m, [&](const auto& xs, const auto& ns, const auto& xm) { return integrateSegment2D<double>(xs, ns, xm, p.tolerance, ring); },
+        [&](const auto& xs, const auto& ns, const auto& xm) { return linearizeSegment2D(xs, ns, xm, p.tolerance, ring); });
+  else
+    integrateWith<S, Mf>(
+        p, s, m,
+        [&](const auto& xs, const auto& ns, const auto& xm) {
+          return integrateCurvedSegment2D<S, Mf, double>(xs, ns, xm, p.tolerance, ring);
+        },
+        [&](const auto& xs, const auto& ns, const auto& xm) {
+          return linearizeCurvedSegment2D<S, Mf>(xs, ns, xm, p.tolerance, ring);
+        });
+}
+
+/// A 3D pair: the linear kernel, or the sub-facet one when a face is a
+/// quadratic Quad9 (MortarSegmentQuadratic3D.hpp).
 template <FaceType S, FaceType Mf>
 void pair3D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
-  const auto xs = faceCoordinates<S>(s, p.x);
-  const auto ns = faceNormals<S>(s, p.contact, p.normals);
-  const auto xm = faceCoordinates<Mf>(m, p.x);
-  if (p.withDerivatives && integrateSegment3D<S, Mf, double>(xs, ns, xm, p.tolerance).contributes) {
-    const auto lin = linearizeSegment3D<S, Mf>(xs, ns, xm, p.tolerance);
-    if (!lin.value.contributes) return;
-    const InputChain chain = buildChain(3, s, m, p.contact, p.normals);
-    accumulate(lin.value, &lin, &chain, s, m, p.out);
-  } else if (!p.withDerivatives) {
-    const auto value = integrateSegment3D<S, Mf, double>(xs, ns, xm, p.tolerance);
-    if (!value.contributes) return;
-    accumulate(value, static_cast<const MortarSegment3DLinearization<S, Mf>*>(nullptr), nullptr, s, m, p.out);
-  }
-}
-
-/// A 3D pair with a Quad9 face (MortarSegmentQuadratic3D.hpp).
-template <FaceType S, FaceType Mf>
-void quadraticPair3D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
-  const auto xs = faceCoordinates<S>(s, p.x);
-  const auto ns = faceNormals<S>(s, p.contact, p.normals);
-  const auto xm = faceCoordinates<Mf>(m, p.x);
-  if (p.withDerivatives && integrateQuadraticSegment3D<S, Mf, double>(xs, ns, xm, p.tolerance).contributes) {
-    const auto lin = linearizeQuadraticSegment3D<S, Mf>(xs, ns, xm, p.tolerance);
-    if (!lin.value.contributes) return;
-    const InputChain chain = buildChain(3, s, m, p.contact, p.normals);
-    accumulate(lin.value, &lin, &chain, s, m, p.out);
-  } else if (!p.withDerivatives) {
-    const auto value = integrateQuadraticSegment3D<S, Mf, double>(xs, ns, xm, p.tolerance);
-    if (!value.contributes) return;
-    accumulate(value, static_cast<const MortarSegment3DLinearization<S, Mf>*>(nullptr), nullptr, s, m, p.out);
-  }
+  if constexpr (S == FaceType::Quad9 || Mf == FaceType::Quad9)
+    integrateWith<S, Mf>(
+        p, s, m,
+        [&](const auto& xs, const auto& ns, const auto& xm) {
+          return integrateQuadraticSegment3D<S, Mf, double>(xs, ns, xm, p.tolerance);
+        },
+        [&](const auto& xs, const auto& ns, const auto& xm) {
+          return linearizeQuadraticSegment3D<S, Mf>(xs, ns, xm, p.tolerance);
+        });
+  else
+    integrateWith<S, Mf>(
+        p, s, m,
+        [&](const auto& xs, const auto& ns, const auto& xm) {
+          return integrateSegment3D<S, Mf, double>(xs, ns, xm, p.tolerance);
+        },
+        [&](const auto& xs, const auto& ns, const auto& xm) { return linearizeSegment3D<S, Mf>(xs, ns, xm, p.tolerance); });
 }
 
 void integratePair(const PairContext& p, const ContactFace& s, const ContactFace& m) {
+  using F = FaceType;
   if (p.contact.dimension() == 2) {
-    const bool sQuadratic = s.type == FaceType::Line3, mQuadratic = m.type == FaceType::Line3;
-    if (sQuadratic && mQuadratic) return curvedPair2D<FaceType::Line3, FaceType::Line3>(p, s, m);
-    if (sQuadratic) return curvedPair2D<FaceType::Line3, FaceType::Line2>(p, s, m);
-    if (mQuadratic) return curvedPair2D<FaceType::Line2, FaceType::Line3>(p, s, m);
-    return pair2D(p, s, m);
+    const bool sLine3 = s.type == F::Line3, mLine3 = m.type == F::Line3;
+    if (sLine3) return mLine3 ? pair2D<F::Line3, F::Line3>(p, s, m) : pair2D<F::Line3, F::Line2>(p, s, m);
+    return mLine3 ? pair2D<F::Line2, F::Line3>(p, s, m) : pair2D<F::Line2, F::Line2>(p, s, m);
   }
-  const bool sTri = s.type == FaceType::Tri3, mTri = m.type == FaceType::Tri3;
-  if (s.type == FaceType::Quad9) {
-    if (m.type == FaceType::Quad9) return quadraticPair3D<FaceType::Quad9, FaceType::Quad9>(p, s, m);
-    if (mTri) return quadraticPair3D<FaceType::Quad9, FaceType::Tri3>(p, s, m);
-    return quadraticPair3D<FaceType::Quad9, FaceType::Quad4>(p, s, m);
-  }
-  if (m.type == FaceType::Quad9)
-    return sTri ? quadraticPair3D<FaceType::Tri3, FaceType::Quad9>(p, s, m)
-                : quadraticPair3D<FaceType::Quad4, FaceType::Quad9>(p, s, m);
-  if (sTri && mTri) return pair3D<FaceType::Tri3, FaceType::Tri3>(p, s, m);
-  if (sTri) return pair3D<FaceType::Tri3, FaceType::Quad4>(p, s, m);
-  if (mTri) return pair3D<FaceType::Quad4, FaceType::Tri3>(p, s, m);
-  return pair3D<FaceType::Quad4, FaceType::Quad4>(p, s, m);
+  // 3D: Tri3, Quad4 or Quad9 on either side (pair3D picks the kernel).
+  auto withMaster = [&](auto slave) {
+    constexpr F S = decltype(slave)::value;
+    if (m.type == F::Tri3) return pair3D<S, F::Tri3>(p, s, m);
+    if (m.type == F::Quad9) return pair3D<S, F::Quad9>(p, s, m);
+    return pair3D<S, F::Quad4>(p, s, m);
+  };
+  if (s.type == F::Tri3) return withMaster(std::integral_constant<F, F::Tri3>{});
+  if (s.type == F::Quad9) return withMaster(std::integral_constant<F, F::Quad9>{});
+  return withMaster(std::integral_constant<F, F::Quad4>{});
 }
 
 }  // namespace

@@ -3,7 +3,8 @@
 /// @brief The geometry helpers of the auxiliary-plane mortar kernels
 /// (MortarSegment3D.cpp, MortarSegmentQuadratic3D.cpp): 3-vectors, the
 /// 7-point triangle rule, the inverse of a face map projected onto the
-/// plane, and the convexity test of a projected quadrilateral. Includes
+/// plane, the convexity test of a projected quadrilateral, and the Sacado
+/// linearization of a kernel. Includes
 /// Sacado: for .cpp files only.
 #include <Sacado.hpp>
 
@@ -12,6 +13,8 @@
 #include <type_traits>
 
 #include "coulomb/contact/mortar/DualBasis.hpp"
+#include "coulomb/contact/mortar/MortarScalarTypes.hpp"
+#include "coulomb/contact/mortar/MortarSegment3D.hpp"
 #include "coulomb/contact/mortar/PolygonClipping.hpp"
 #include "coulomb/core/Error.hpp"
 
@@ -172,5 +175,46 @@ int reflexVertex(const PlaneNodes<FaceType::Quad4, T>& p, double areaTolerance) 
   return against == 1 ? first : -2;
 }
 
+
+/// Values and derivatives of a 3D segment kernel: `integrate(xs, ns, xm)`
+/// called on Sacado SFad scalars seeded with the inputs in the order of
+/// MortarSegment3DLinearization (slave coordinates, slave normals, master
+/// coordinates), the values and derivatives read off.
+template <FaceType S, FaceType Mf, class Integrate>
+MortarSegment3DLinearization<S, Mf> linearize3D(const FaceNodes<S, double>& xs, const FaceNodes<S, double>& ns,
+                                                const FaceNodes<Mf, double>& xm, Integrate&& integrate) {
+  constexpr int nS = FaceTraits<S>::nodes;
+  constexpr int nM = FaceTraits<Mf>::nodes;
+  constexpr int nI = segment3DInputs<S, Mf>;
+  using Fad = SegmentFad3D<S, Mf>;
+  FaceNodes<S, Fad> fxs, fns;
+  FaceNodes<Mf, Fad> fxm;
+  for (int a = 0; a < nS; ++a)
+    for (int i = 0; i < 3; ++i) {
+      fxs[a][i] = Fad(nI, 3 * a + i, xs[a][i]);
+      fns[a][i] = Fad(nI, 3 * nS + 3 * a + i, ns[a][i]);
+    }
+  for (int a = 0; a < nM; ++a)
+    for (int i = 0; i < 3; ++i) fxm[a][i] = Fad(nI, 6 * nS + 3 * a + i, xm[a][i]);
+  const MortarSegment3D<S, Mf, Fad> r = integrate(fxs, fns, fxm);
+  MortarSegment3DLinearization<S, Mf> lin;
+  lin.value.contributes = r.contributes;
+  lin.value.polygonVertices = r.polygonVertices;
+  lin.value.area = r.area.val();
+  for (int i = 0; i < nI; ++i) lin.dArea[i] = r.area.dx(i);
+  for (int j = 0; j < nS; ++j) {
+    lin.value.D[j] = r.D[j].val();
+    lin.value.gap[j] = r.gap[j].val();
+    for (int i = 0; i < nI; ++i) {
+      lin.dD[j][i] = r.D[j].dx(i);
+      lin.dGap[j][i] = r.gap[j].dx(i);
+    }
+    for (int l = 0; l < nM; ++l) {
+      lin.value.M[j][l] = r.M[j][l].val();
+      for (int i = 0; i < nI; ++i) lin.dM[j][l][i] = r.M[j][l].dx(i);
+    }
+  }
+  return lin;
+}
 
 }  // namespace coulomb::contact::plane

@@ -203,39 +203,9 @@ template <FaceType S, FaceType Mf>
 MortarSegment3DLinearization<S, Mf> linearizeSegment3D(const FaceNodes<S, double>& xs,
                                                        const FaceNodes<S, double>& ns,
                                                        const FaceNodes<Mf, double>& xm, double relativeTolerance) {
-  constexpr int nS = FaceTraits<S>::nodes;
-  constexpr int nM = FaceTraits<Mf>::nodes;
-  constexpr int nI = segment3DInputs<S, Mf>;
-  using Fad = SegmentFad3D<S, Mf>;
-  FaceNodes<S, Fad> fxs, fns;
-  FaceNodes<Mf, Fad> fxm;
-  for (int a = 0; a < nS; ++a)
-    for (int i = 0; i < 3; ++i) {
-      fxs[a][i] = Fad(nI, 3 * a + i, xs[a][i]);
-      fns[a][i] = Fad(nI, 3 * nS + 3 * a + i, ns[a][i]);
-    }
-  for (int a = 0; a < nM; ++a)
-    for (int i = 0; i < 3; ++i) fxm[a][i] = Fad(nI, 6 * nS + 3 * a + i, xm[a][i]);
-  const MortarSegment3D<S, Mf, Fad> r = integrateSegment3D<S, Mf, Fad>(fxs, fns, fxm, relativeTolerance);
-
-  MortarSegment3DLinearization<S, Mf> lin;
-  lin.value.contributes = r.contributes;
-  lin.value.polygonVertices = r.polygonVertices;
-  lin.value.area = r.area.val();
-  for (int i = 0; i < nI; ++i) lin.dArea[i] = r.area.dx(i);
-  for (int j = 0; j < nS; ++j) {
-    lin.value.D[j] = r.D[j].val();
-    lin.value.gap[j] = r.gap[j].val();
-    for (int i = 0; i < nI; ++i) {
-      lin.dD[j][i] = r.D[j].dx(i);
-      lin.dGap[j][i] = r.gap[j].dx(i);
-    }
-    for (int l = 0; l < nM; ++l) {
-      lin.value.M[j][l] = r.M[j][l].val();
-      for (int i = 0; i < nI; ++i) lin.dM[j][l][i] = r.M[j][l].dx(i);
-    }
-  }
-  return lin;
+  return linearize3D<S, Mf>(xs, ns, xm, [&](const auto& fxs, const auto& fns, const auto& fxm) {
+    return integrateSegment3D<S, Mf, SegmentFad3D<S, Mf>>(fxs, fns, fxm, relativeTolerance);
+  });
 }
 
 #define COULOMB_CONTACT_SEGMENT3D_INSTANTIATE(S, Mf)                                                      \

@@ -5,6 +5,7 @@
 #include "coulomb/contact/mortar/MortarScalarTypes.hpp"
 
 #include <cmath>
+#include <vector>
 
 #include "coulomb/contact/mortar/AuxiliaryPlane.hpp"
 #include "coulomb/contact/mortar/PolygonClipping.hpp"
@@ -45,7 +46,7 @@ std::vector<SubFacet> subFacets() {
 }
 
 /// A sub-facet projected on the plane and its inverse map: the coordinates
-/// of the plane point p in the parent face.
+/// of the plane point q in the parent face, and det(d xi_parent / d q).
 template <typename T>
 struct PlanePiece {
   const SubFacet* facet = nullptr;
@@ -53,24 +54,75 @@ struct PlanePiece {
   Polygon2<T> polygon;
 
   template <FaceType F>
-  FacePoint<F, T> parentPoint(const Point2<T>& q) const {
-    std::array<T, 2> local{};
+  FacePoint<F, T> parentPoint(const Point2<T>& q, T* jacobian = nullptr) const {
     std::array<T, 4> weight{};
+    std::array<std::array<T, 2>, 4> grad{};
     if (facet->type == FaceType::Tri3) {
       const PlaneNodes<FaceType::Tri3, T> nodes{p[0], p[1], p[2]};
       const auto xi = invertPlaneMap<FaceType::Tri3, T>(nodes, q);
       weight = {T(1.0 - xi[0] - xi[1]), xi[0], xi[1], T(0.0)};
+      grad = {{{T(-1.0), T(-1.0)}, {T(1.0), T(0.0)}, {T(0.0), T(1.0)}, {T(0.0), T(0.0)}}};
     } else {
       const PlaneNodes<FaceType::Quad4, T> nodes{p[0], p[1], p[2], p[3]};
-      weight = faceShapeValues<FaceType::Quad4, T>(invertPlaneMap<FaceType::Quad4, T>(nodes, q));
+      const auto xi = invertPlaneMap<FaceType::Quad4, T>(nodes, q);
+      weight = faceShapeValues<FaceType::Quad4, T>(xi);
+      grad = faceShapeGradients<FaceType::Quad4, T>(xi);
     }
-    for (int i = 0; i < 2; ++i) {
-      local[i] = 0.0;
-      for (int c = 0; c < facet->count; ++c) local[i] += weight[c] * facet->corner[c][i];
-    }
+    std::array<T, 2> local{T(0.0), T(0.0)};
+    std::array<std::array<T, 2>, 2> toParent{}, toPlane{};  // d xi_parent / d xi, d q / d xi
+    for (int i = 0; i < 2; ++i)
+      for (int k = 0; k < 2; ++k) toParent[i][k] = toPlane[i][k] = 0.0;
+    for (int c = 0; c < facet->count; ++c)
+      for (int i = 0; i < 2; ++i) {
+        local[i] += weight[c] * facet->corner[c][i];
+        for (int k = 0; k < 2; ++k) {
+          toParent[i][k] += facet->corner[c][i] * grad[c][k];
+          toPlane[i][k] += p[c][i] * grad[c][k];
+        }
+      }
+    if (jacobian)
+      *jacobian = (toParent[0][0] * toParent[1][1] - toParent[0][1] * toParent[1][0]) /
+                  (toPlane[0][0] * toPlane[1][1] - toPlane[0][1] * toPlane[1][0]);
     return {local[0], local[1]};
   }
 };
+
+/// The convex pieces of a master sub-facet on the plane (`plane`: its
+/// corners there): itself, or, a Quad4 that is not convex there (seen
+/// edge-on, or distorted by a large predictor), the two triangles either
+/// side of the diagonal through its reflex vertex, as the linear kernel
+/// does. A quadrilateral twisted over itself that reaches the slave piece is
+/// a geometry failure of the iterate (the step is cut back); one that does
+/// not is no contact.
+template <typename T>
+std::vector<SubFacet> convexPieces(const SubFacet& f, const std::array<Point2<T>, 4>& plane,
+                                   const Polygon2<T>& slave, double areaTolerance, double tolerance) {
+  if (f.type != FaceType::Quad4) return {f};
+  const PlaneNodes<FaceType::Quad4, T> quad{plane[0], plane[1], plane[2], plane[3]};
+  const int reflex = reflexVertex(quad, areaTolerance);
+  if (reflex == -1) return {f};
+  auto triangle = [&](int a, int b, int c) {
+    SubFacet t;
+    t.type = FaceType::Tri3;
+    t.count = 3;
+    t.node = {f.node[a], f.node[b], f.node[c], -1};
+    t.corner = {f.corner[a], f.corner[b], f.corner[c], f.corner[a]};
+    return t;
+  };
+  if (reflex >= 0)
+    return {triangle(reflex, (reflex + 1) % 4, (reflex + 2) % 4), triangle((reflex + 2) % 4, (reflex + 3) % 4, reflex)};
+  for (int first : {0, 2}) {
+    Polygon2<T> half;
+    for (int a = 0; a < 3; ++a) half.push(plane[(first + a) % 4]);
+    if (!(std::abs(valueOf(signedArea(half))) > areaTolerance)) continue;
+    makeCounterClockwise(half);
+    const Polygon2<T> part = clipConvexPolygon(half, slave, tolerance);
+    COULOMB_REQUIRE(!(part.size >= 3 && valueOf(signedArea(part)) > areaTolerance),
+                    "mortar integration: a master face is twisted over itself when projected onto a slave face's "
+                    "auxiliary plane (a bow-tie)");
+  }
+  return {};
+}
 
 }  // namespace
 
@@ -126,67 +178,70 @@ MortarSegment3D<S, Mf, T> integrateQuadraticSegment3D(const FaceNodes<S, T>& xs,
                       "mortar integration: a slave face is not convex on its auxiliary plane (distorted element)");
     }
     const double tolerance = relativeTolerance * std::sqrt(slaveArea);
-    for (const SubFacet& fm : masterFacets) {
-      PlanePiece<T> master;
-      master.facet = &fm;
-      for (int c = 0; c < fm.count; ++c) {
-        master.p[c] = toPlane(xm[fm.node[c]]);
-        master.polygon.push(master.p[c]);
+    for (const SubFacet& facet : masterFacets) {
+      std::array<Point2<T>, 4> corners{};
+      Polygon2<T> outline;
+      for (int c = 0; c < facet.count; ++c) {
+        corners[c] = toPlane(xm[facet.node[c]]);
+        outline.push(corners[c]);
       }
-      if (!(std::abs(valueOf(signedArea(master.polygon))) > relativeTolerance * slaveArea)) continue;
-      if (fm.type == FaceType::Quad4) {
-        const PlaneNodes<FaceType::Quad4, T> quad{master.p[0], master.p[1], master.p[2], master.p[3]};
-        COULOMB_REQUIRE(reflexVertex(quad, relativeTolerance * slaveArea) == -1,
-                        "mortar integration: a master face is not convex on a slave face's auxiliary plane");
-      }
-      Polygon2<T> masterPolygon = master.polygon;
-      makeCounterClockwise(masterPolygon);
-      const Polygon2<T> clip = clipConvexPolygon(masterPolygon, slave.polygon, tolerance);
-      if (clip.size < 3 || !(valueOf(signedArea(clip)) > relativeTolerance * slaveArea)) continue;
-      out.contributes = true;
-      out.polygonVertices += clip.size;
-      const Point2<T> centre = areaCentroid(clip);
-      for (int c = 0; c < clip.size; ++c) {
-        const Point2<T>& q0 = centre;
-        const Point2<T>& q1 = clip.vertex[c];
-        const Point2<T>& q2 = clip.vertex[(c + 1) % clip.size];
-        const T cellArea = 0.5 * ((q1[0] - q0[0]) * (q2[1] - q0[1]) - (q1[1] - q0[1]) * (q2[0] - q0[0]));
-        for (int g = 0; g < 7; ++g) {
-          const std::array<double, 3>& L = rule.L[g];
-          const Point2<T> p{T(L[0] * q0[0] + L[1] * q1[0] + L[2] * q2[0]),
-                            T(L[0] * q0[1] + L[1] * q1[1] + L[2] * q2[1])};
-          const FacePoint<S, T> xi1 = slave.template parentPoint<S>(p);
-          const FacePoint<Mf, T> xi2 = master.template parentPoint<Mf>(p);
-          const NodalValues<S, T> N1 = faceShapeValues<S, T>(xi1);
-          const NodalValues<S, T> phi = dualShapeValues<S, T, T>(A, xi1);
-          const NodalValues<Mf, T> N2 = faceShapeValues<Mf, T>(xi2);
-          const Vec3<T> x1 = facePoint<S, T, T>(xs, xi1);
-          const Vec3<T> x2 = facePoint<Mf, T, T>(xm, xi2);
-          Vec3<T> n{T(0.0), T(0.0), T(0.0)};
-          for (int a = 0; a < nS; ++a)
-            for (int i = 0; i < 3; ++i) n[i] += N1[a] * ns[a][i];
-          const T gn = dot(sub(x2, x1), n) / sqrt(dot(n, n));
-          T dA = rule.w[g] * cellArea;
-          if (fs.type == FaceType::Quad4) {
-            // The sub-facet's measure over the plane's (MortarSegment3D.hpp, step 6).
-            const PlaneNodes<FaceType::Quad4, T> quad{slave.p[0], slave.p[1], slave.p[2], slave.p[3]};
-            const auto grad = faceShapeGradients<FaceType::Quad4, T>(invertPlaneMap<FaceType::Quad4, T>(quad, p));
+      if (!(std::abs(valueOf(signedArea(outline))) > relativeTolerance * slaveArea)) continue;
+      for (const SubFacet& fm :
+           convexPieces(facet, corners, slave.polygon, relativeTolerance * slaveArea, tolerance)) {
+        PlanePiece<T> master;
+        master.facet = &fm;
+        for (int c = 0; c < fm.count; ++c) {
+          master.p[c] = toPlane(xm[fm.node[c]]);
+          master.polygon.push(master.p[c]);
+        }
+        if (!(std::abs(valueOf(signedArea(master.polygon))) > relativeTolerance * slaveArea)) continue;
+        Polygon2<T> masterPolygon = master.polygon;
+        makeCounterClockwise(masterPolygon);
+        const Polygon2<T> clip = clipConvexPolygon(masterPolygon, slave.polygon, tolerance);
+        if (clip.size < 3 || !(valueOf(signedArea(clip)) > relativeTolerance * slaveArea)) continue;
+        out.contributes = true;
+        out.polygonVertices += clip.size;
+        const Point2<T> centre = areaCentroid(clip);
+        for (int c = 0; c < clip.size; ++c) {
+          const Point2<T>& q0 = centre;
+          const Point2<T>& q1 = clip.vertex[c];
+          const Point2<T>& q2 = clip.vertex[(c + 1) % clip.size];
+          const T cellArea = 0.5 * ((q1[0] - q0[0]) * (q2[1] - q0[1]) - (q1[1] - q0[1]) * (q2[0] - q0[0]));
+          for (int g = 0; g < 7; ++g) {
+            const std::array<double, 3>& L = rule.L[g];
+            const Point2<T> p{T(L[0] * q0[0] + L[1] * q1[0] + L[2] * q2[0]),
+                              T(L[0] * q0[1] + L[1] * q1[1] + L[2] * q2[1])};
+            T toParent{};  // det(d xi1 / d p)
+            const FacePoint<S, T> xi1 = slave.template parentPoint<S>(p, &toParent);
+            const FacePoint<Mf, T> xi2 = master.template parentPoint<Mf>(p);
+            const NodalValues<S, T> N1 = faceShapeValues<S, T>(xi1);
+            const NodalValues<S, T> phi = dualShapeValues<S, T, T>(A, xi1);
+            const NodalValues<Mf, T> N2 = faceShapeValues<Mf, T>(xi2);
+            const Vec3<T> x1 = facePoint<S, T, T>(xs, xi1);
+            const Vec3<T> x2 = facePoint<Mf, T, T>(xm, xi2);
+            Vec3<T> n{T(0.0), T(0.0), T(0.0)};
+            for (int a = 0; a < nS; ++a)
+              for (int i = 0; i < 3; ++i) n[i] += N1[a] * ns[a][i];
+            const T gn = dot(sub(x2, x1), n) / sqrt(dot(n, n));
+            // The parent's surface measure |x_xi × x_eta| dxi1, dxi1 = det(d xi1 / d p) dp:
+            // the measure faceMass integrates, so the dual basis stays biorthogonal.
+            const auto grad = faceShapeGradients<S, T>(xi1);
             Vec3<T> tx{T(0.0), T(0.0), T(0.0)}, ty{T(0.0), T(0.0), T(0.0)};
-            for (int a = 0; a < 4; ++a)
+            for (int a = 0; a < nS; ++a)
               for (int i = 0; i < 3; ++i) {
-                tx[i] += grad[a][0] * xs[fs.node[a]][i];
-                ty[i] += grad[a][1] * xs[fs.node[a]][i];
+                tx[i] += grad[a][0] * xs[a][i];
+                ty[i] += grad[a][1] * xs[a][i];
               }
             const Vec3<T> nx = cross(tx, ty);
-            dA *= sqrt(dot(nx, nx)) / dot(nx, n0);
+            const T dA = rule.w[g] * cellArea * sqrt(dot(nx, nx)) * toParent;
+            for (int j = 0; j < nS; ++j) {
+              const T pw = phi[j] * dA;
+              out.D[j] += pw;
+              out.gap[j] += pw * gn;
+              for (int l = 0; l < nM; ++l) out.M[j][l] += pw * N2[l];
+            }
+            out.area += dA;
           }
-          for (int j = 0; j < nS; ++j) {
-            const T pw = phi[j] * dA;
-            out.D[j] += pw;
-            out.gap[j] += pw * gn;
-            for (int l = 0; l < nM; ++l) out.M[j][l] += pw * N2[l];
-          }
-          out.area += dA;
         }
       }
     }
@@ -199,38 +254,9 @@ MortarSegment3DLinearization<S, Mf> linearizeQuadraticSegment3D(const FaceNodes<
                                                                 const FaceNodes<S, double>& ns,
                                                                 const FaceNodes<Mf, double>& xm,
                                                                 double relativeTolerance) {
-  constexpr int nS = FaceTraits<S>::nodes;
-  constexpr int nM = FaceTraits<Mf>::nodes;
-  constexpr int nI = segment3DInputs<S, Mf>;
-  using Fad = SegmentFad3D<S, Mf>;
-  FaceNodes<S, Fad> fxs, fns;
-  FaceNodes<Mf, Fad> fxm;
-  for (int a = 0; a < nS; ++a)
-    for (int i = 0; i < 3; ++i) {
-      fxs[a][i] = Fad(nI, 3 * a + i, xs[a][i]);
-      fns[a][i] = Fad(nI, 3 * nS + 3 * a + i, ns[a][i]);
-    }
-  for (int a = 0; a < nM; ++a)
-    for (int i = 0; i < 3; ++i) fxm[a][i] = Fad(nI, 6 * nS + 3 * a + i, xm[a][i]);
-  const MortarSegment3D<S, Mf, Fad> r = integrateQuadraticSegment3D<S, Mf, Fad>(fxs, fns, fxm, relativeTolerance);
-  MortarSegment3DLinearization<S, Mf> lin;
-  lin.value.contributes = r.contributes;
-  lin.value.polygonVertices = r.polygonVertices;
-  lin.value.area = r.area.val();
-  for (int i = 0; i < nI; ++i) lin.dArea[i] = r.area.dx(i);
-  for (int j = 0; j < nS; ++j) {
-    lin.value.D[j] = r.D[j].val();
-    lin.value.gap[j] = r.gap[j].val();
-    for (int i = 0; i < nI; ++i) {
-      lin.dD[j][i] = r.D[j].dx(i);
-      lin.dGap[j][i] = r.gap[j].dx(i);
-    }
-    for (int l = 0; l < nM; ++l) {
-      lin.value.M[j][l] = r.M[j][l].val();
-      for (int i = 0; i < nI; ++i) lin.dM[j][l][i] = r.M[j][l].dx(i);
-    }
-  }
-  return lin;
+  return linearize3D<S, Mf>(xs, ns, xm, [&](const auto& fxs, const auto& fns, const auto& fxm) {
+    return integrateQuadraticSegment3D<S, Mf, SegmentFad3D<S, Mf>>(fxs, fns, fxm, relativeTolerance);
+  });
 }
 
 #define COULOMB_QUADRATIC_3D_INSTANTIATE(S, Mf)                                                                     \
