@@ -14,6 +14,7 @@
 
 #include "ContactTestSupport.hpp"
 #include "TestSupport.hpp"
+#include "coulomb/core/Error.hpp"
 
 namespace coulomb::test {
 namespace {
@@ -73,6 +74,27 @@ TEST(ContactManyBodies, StackedBlocksTransmitTheUniformStressThroughBothInterfac
     EXPECT_NEAR(lastGlobal(run.results, "contact_force_lower_y"), sigma, 1e-8 * sigma);
     EXPECT_NEAR(lastGlobal(run.results, "reaction_top_y"), -sigma, 1e-8 * sigma);
     EXPECT_NEAR(lastGlobal(run.results, "reaction_bottom_y"), sigma, 1e-8 * sigma);
+  }
+}
+
+// A condensed pair whose slave surface (the middle block's bottom) and
+// master surface share a node: here the master list also holds the side set
+// `left`, whose faces on the middle block meet its bottom at (0, 0.5). The
+// node's rows cannot take both its conditions and master forces: refused
+// with one line naming the pair and the node, on every rank.
+TEST(ContactManyBodies, NodeOnBothSurfacesOfAPairIsRefused) {
+  const AssemblyPair upper{"upper", "top_block_bottom", "middle_block_top"};
+  const AssemblyPair lower{"lower", "middle_block_bottom", "bottom_block_top, left"};
+  const std::string dir = scratchDirectory("stacked_crosspoint");
+  writeOnRoot(dir + "/deck.xml", assemblyDeck("stacked_blocks2d.e", {"bottom_block", "middle_block", "top_block"},
+                                               {{"left", "x"}}, 0.01, {upper, lower}));
+  try {
+    solver::Simulation simulation(dir + "/deck.xml", worldComm(), nullptr, dir + "/out.e");
+    ADD_FAILURE() << "no error";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("Contact/Pairs/lower: node"), std::string::npos) << what;
+    EXPECT_NE(what.find("both the slave and the master surface"), std::string::npos) << what;
   }
 }
 

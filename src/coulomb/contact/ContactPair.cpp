@@ -117,7 +117,6 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
       penalty_[i] = automatic[interface_->interfaceNodeIndex(interface_->slaveNodes()[interface_->ownedSlaveNodes()[i]])];
   }
   nodes_.assign(owned, SlaveNodeState{});
-  markMasterOnlyNodes(form);
   accumulatedSlip_.assign(owned, {0.0, 0.0, 0.0});
   lastStepSlip_ = accumulatedSlip_;
   // The objective slip (4.69b) of the first step needs D^t, M^t of the
@@ -137,30 +136,6 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
 
 ContactPair::~ContactPair() = default;
 
-void ContactPair::markMasterOnlyNodes(ContactSystemForm form) {
-  masterOnly_.assign(nodes_.size(), 0);
-  // Condensed ALM / MPC replace a slave node's rows by its conditions; a
-  // node of the pair's own master faces also takes master forces on those
-  // rows, which the conditions cannot hold (PairChaining.hpp, the same
-  // conflict between pairs). Such a node (a crack tip, the edge where the
-  // slave and master sides of one body meet) is a master node only: its
-  // multiplier stays zero, the crosspoint rule of mortar methods.
-  const auto f = settings_.formulation;
-  if (form != ContactSystemForm::Condensed || (f != ContactFormulation::ALM && f != ContactFormulation::MPC)) return;
-  std::vector<long long> masters;
-  for (const ContactFace& face : interface_->masterFaces())
-    masters.insert(masters.end(), face.nodes.begin(), face.nodes.begin() + face.numNodes);
-  std::sort(masters.begin(), masters.end());
-  long long count = 0;
-  for (std::size_t i = 0; i < nodes_.size(); ++i) {
-    const long long node = interface_->slaveNodes()[interface_->ownedSlaveNodes()[i]];
-    masterOnly_[i] = std::binary_search(masters.begin(), masters.end(), node) ? 1 : 0;
-  }
-  for (long long node : interface_->slaveNodes()) count += std::binary_search(masters.begin(), masters.end(), node);
-  if (count > 0)
-    notes_.push_back(std::to_string(count) + " slave node(s) are also nodes of the pair's master faces: they act as "
-                     "master nodes only (no multiplier)");
-}
 
 void ContactPair::beginStep(int deckStep) {
   searched_ = false;
@@ -381,7 +356,7 @@ PairIterationSummary ContactPair::updateNodes(const Vector* bulkResidual, const 
     SlaveNodeState& node = nodes_[i];
     const ContactState previous = node.state;
     ContactState state = ContactState::Inactive;
-    if (n.mortar != nullptr && !masterOnly_[i]) {
+    if (n.mortar != nullptr) {
       if (slip) {
         n.slip = node.weightedSlip = weightedSlip(*n.mortar, nullptr);
         for (int c = 0; c < 3; ++c) node.slipIncrement[c] = -n.slip[c] / n.mortar->D;  // the slave relative to the master

@@ -162,10 +162,6 @@ private:
   NodalMortarQuantities mortarDerivatives_;
   /// The owned slave nodes (ownedSlaveNodes() order): now and at the step start.
   std::vector<SlaveNodeState> nodes_, stepStart_;
-  /// Per owned slave node: also a node of the pair's master faces, in a
-  /// condensed ALM / MPC pair: never active (markMasterOnlyNodes).
-  std::vector<char> masterOnly_;
-  void markMasterOnlyNodes(ContactSystemForm form);
   // Friction: the mortar operators and interface coordinates of the last
   // converged state (D^t, M^t, x^t of 4.69) and per owned node the slip
   // accumulated over the steps before this one.

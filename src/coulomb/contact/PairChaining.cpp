@@ -54,9 +54,12 @@ PairChaining::PairChaining(const std::vector<std::unique_ptr<ContactPair>>& pair
     std::set<long long> shared;
     for (long long node : pairs[p]->interface().slaveNodes())
       for (std::size_t q = 0; q < n; ++q)
-        // A node of the pair's own master faces is a master node only
-        // (ContactPair::markMasterOnlyNodes): no chain.
-        if (q != p && std::binary_search(masters[q].begin(), masters[q].end(), node)) {
+        if (std::binary_search(masters[q].begin(), masters[q].end(), node)) {
+          // Within one pair there is no order to fold in: refused.
+          COULOMB_REQUIRE(q != p, "Contact/Pairs/" << pairs[p]->settings().name << ": node " << node + 1
+                                                   << " is on both the slave and the master surface of the pair; "
+                                                      "its condensed rows cannot take both (leave it out of one side "
+                                                      "set, or use Formulation = Penalty)");
           before[p].insert(q);
           shared.insert(node);
         }

@@ -38,8 +38,8 @@ class ContactPair;
 class PairChaining {
 public:
   /// Not collective (every rank holds every pair's nodes). Throws
-  /// coulomb::Error naming two pairs of a cycle (a node of a pair's own
-  /// master faces is no link: ContactPair::markMasterOnlyNodes).
+  /// coulomb::Error naming two pairs of a cycle, or a condensed pair and a
+  /// node on both its slave and its master surface.
   explicit PairChaining(const std::vector<std::unique_ptr<ContactPair>>& pairs);
 
   /// The order in which to update the pairs (indices into pairs).
