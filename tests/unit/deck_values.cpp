@@ -17,8 +17,12 @@
 
 namespace {
 
+/// A file of this test's own folder: ctest runs the tests of this file in
+/// parallel processes (gtest_discover_tests), which shared deck.xml before
+/// (DeckValues.* then failed at random under ctest -j2).
 std::string scratch(const std::string& name) {
-  const auto dir = std::filesystem::path(COULOMB_BINARY_DIR) / "tests" / "deck_values";
+  const auto dir = std::filesystem::path(COULOMB_BINARY_DIR) / "tests" / "deck_values" /
+                   ::testing::UnitTest::GetInstance()->current_test_info()->name();
   std::filesystem::create_directories(dir);
   return (dir / name).string();
 }
