@@ -38,6 +38,22 @@ Q9 up() {
 /// (nodes 0 3 2 1, 7 6 5 4, 8), as a body facing the slave has.
 Q9 reversed(const Q9& x) { return {x[0], x[3], x[2], x[1], x[7], x[6], x[5], x[4], x[8]}; }
 
+/// Plane parallel faces at the gap g: sum_l M_jl = D_j (no weighted relative
+/// displacement under a translation), g~_j = g D_j, sum_j D_j = the overlap `area`.
+template <class Segment>
+void expectPatchIdentities(const Segment& r, double g, double area) {
+  ASSERT_TRUE(r.contributes);
+  double sumD = 0;
+  for (int j = 0; j < 9; ++j) {
+    double sumM = 0;
+    for (double m : r.M[j]) sumM += m;
+    EXPECT_NEAR(sumM, r.D[j], 1e-12) << j;
+    EXPECT_NEAR(r.gap[j], g * r.D[j], 1e-12) << j;
+    sumD += r.D[j];
+  }
+  EXPECT_NEAR(sumD, area, 1e-12);
+}
+
 // D_e = int N_j dA of a Quad9 on a rectangle of area A: A/36 at corners,
 // A/9 at mid-sides, 4A/9 at the centre (positive: the condensation applies),
 // and A = D_e M_e^-1 makes int Phi_j N_k = delta_jk D_e[j].
@@ -62,18 +78,7 @@ TEST(Mortar3DQuadratic, Quad9DualBasisHasPositiveD) {
 TEST(Mortar3DQuadratic, PlaneParallelFacesGiveThePatchIdentities) {
   const double g = 0.2;
   const Q9 slave = quad9(0.0, 0.0, 2.0, 2.0, 0.0, 0.0, 0.2);
-  auto check = [&](const auto& r, double area) {
-    ASSERT_TRUE(r.contributes);
-    double sumD = 0;
-    for (int j = 0; j < 9; ++j) {
-      double sumM = 0;
-      for (double m : r.M[j]) sumM += m;
-      EXPECT_NEAR(sumM, r.D[j], 1e-12) << j;
-      EXPECT_NEAR(r.gap[j], g * r.D[j], 1e-12) << j;
-      sumD += r.D[j];
-    }
-    EXPECT_NEAR(sumD, area, 1e-12);
-  };
+  auto check = [&](const auto& r, double area) { expectPatchIdentities(r, g, area); };
   // A Quad9 master over x in [0.7, 3], y in [-1, 1.3] (a part), then one covering all.
   check(integrateQuadraticSegment3D<FaceType::Quad9, FaceType::Quad9, double>(
             slave, up(), reversed(quad9(0.7, -1.0, 2.3, 2.3, g)), 1e-12),
@@ -97,16 +102,7 @@ TEST(Mortar3DQuadratic, NonConvexMasterIsTwoTriangles) {
   const Q9 slave = quad9(0.0, 0.0, 2.0, 2.0, 0.0);
   const Q4 dart{{{0.2, 1.8, g}, {0.8, 0.8, g}, {1.8, 0.2, g}, {0.2, 0.2, g}}};  // facing the slave
   const auto r = integrateQuadraticSegment3D<FaceType::Quad9, FaceType::Quad4, double>(slave, up(), dart, 1e-12);
-  ASSERT_TRUE(r.contributes);
-  double sumD = 0;
-  for (int j = 0; j < 9; ++j) {
-    double sumM = 0;
-    for (double m : r.M[j]) sumM += m;
-    EXPECT_NEAR(sumM, r.D[j], 1e-12) << j;
-    EXPECT_NEAR(r.gap[j], g * r.D[j], 1e-12) << j;
-    sumD += r.D[j];
-  }
-  EXPECT_NEAR(sumD, 0.96, 1e-12);
+  expectPatchIdentities(r, g, 0.96);
 }
 
 /// Central differences of every output against every input (h = 1e-6): the

@@ -176,6 +176,32 @@ int reflexVertex(const PlaneNodes<FaceType::Quad4, T>& p, double areaTolerance) 
 }
 
 
+/// x_xi × x_eta of the face with nodes `x` at the point of shape gradients `grad`.
+template <FaceType F, typename T>
+Vec3<T> tangentNormal(const std::array<std::array<T, 2>, FaceTraits<F>::nodes>& grad, const FaceNodes<F, T>& x) {
+  Vec3<T> tx{T(0.0), T(0.0), T(0.0)}, ty{T(0.0), T(0.0), T(0.0)};
+  for (int a = 0; a < FaceTraits<F>::nodes; ++a)
+    for (int i = 0; i < 3; ++i) {
+      tx[i] += grad[a][0] * x[a][i];
+      ty[i] += grad[a][1] * x[a][i];
+    }
+  return cross(tx, ty);
+}
+
+/// One Gauss point of a segment: D_j += Phi_j dA, g~_j += Phi_j g_n dA,
+/// M_jl += Phi_j N^2_l dA, the overlap area += dA.
+template <FaceType S, FaceType Mf, typename T>
+void addGaussPoint(MortarSegment3D<S, Mf, T>& out, const NodalValues<S, T>& phi, const NodalValues<Mf, T>& N2,
+                   const T& gn, const T& dA) {
+  for (int j = 0; j < FaceTraits<S>::nodes; ++j) {
+    const T pw = phi[j] * dA;
+    out.D[j] += pw;
+    out.gap[j] += pw * gn;
+    for (int l = 0; l < FaceTraits<Mf>::nodes; ++l) out.M[j][l] += pw * N2[l];
+  }
+  out.area += dA;
+}
+
 /// Values and derivatives of a 3D segment kernel: `integrate(xs, ns, xm)`
 /// called on Sacado SFad scalars seeded with the inputs in the order of
 /// MortarSegment3DLinearization (slave coordinates, slave normals, master

@@ -176,23 +176,10 @@ MortarSegment3D<S, Mf, T> integrateSegment3D(const FaceNodes<S, T>& xs, const Fa
         T dA = rule.w[g] * cellArea;
         if constexpr (S == FaceType::Quad4) {
           // Slave surface measure over plane measure: |x_xi × x_eta| / ((x_xi × x_eta).n0).
-          const auto grad = faceShapeGradients<S, T>(xi1);
-          Vec3<T> tx{T(0.0), T(0.0), T(0.0)}, ty{T(0.0), T(0.0), T(0.0)};
-          for (int a = 0; a < nS; ++a)
-            for (int i = 0; i < 3; ++i) {
-              tx[i] += grad[a][0] * xs[a][i];
-              ty[i] += grad[a][1] * xs[a][i];
-            }
-          const Vec3<T> nx = cross(tx, ty);
+          const Vec3<T> nx = tangentNormal<S, T>(faceShapeGradients<S, T>(xi1), xs);
           dA *= sqrt(dot(nx, nx)) / dot(nx, n0);
         }
-        for (int j = 0; j < nS; ++j) {
-          const T pw = phi[j] * dA;
-          out.D[j] += pw;
-          out.gap[j] += pw * gn;
-          for (int l = 0; l < nM; ++l) out.M[j][l] += pw * N2[l];
-        }
-        out.area += dA;
+        addGaussPoint(out, phi, N2, gn, dA);
       }
     }
   }

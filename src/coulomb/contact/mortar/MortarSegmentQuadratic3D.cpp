@@ -225,22 +225,8 @@ MortarSegment3D<S, Mf, T> integrateQuadraticSegment3D(const FaceNodes<S, T>& xs,
             const T gn = dot(sub(x2, x1), n) / sqrt(dot(n, n));
             // The parent's surface measure |x_xi × x_eta| dxi1, dxi1 = det(d xi1 / d p) dp:
             // the measure faceMass integrates, so the dual basis stays biorthogonal.
-            const auto grad = faceShapeGradients<S, T>(xi1);
-            Vec3<T> tx{T(0.0), T(0.0), T(0.0)}, ty{T(0.0), T(0.0), T(0.0)};
-            for (int a = 0; a < nS; ++a)
-              for (int i = 0; i < 3; ++i) {
-                tx[i] += grad[a][0] * xs[a][i];
-                ty[i] += grad[a][1] * xs[a][i];
-              }
-            const Vec3<T> nx = cross(tx, ty);
-            const T dA = rule.w[g] * cellArea * sqrt(dot(nx, nx)) * toParent;
-            for (int j = 0; j < nS; ++j) {
-              const T pw = phi[j] * dA;
-              out.D[j] += pw;
-              out.gap[j] += pw * gn;
-              for (int l = 0; l < nM; ++l) out.M[j][l] += pw * N2[l];
-            }
-            out.area += dA;
+            const Vec3<T> nx = tangentNormal<S, T>(faceShapeGradients<S, T>(xi1), xs);
+            addGaussPoint(out, phi, N2, gn, T(rule.w[g] * cellArea * sqrt(dot(nx, nx)) * toParent));
           }
         }
       }
