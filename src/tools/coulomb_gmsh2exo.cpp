@@ -62,19 +62,54 @@ int main(int argc, char** argv) {
   // crashes on some damaged files (tests/fuzz/gmsh_crashes/), and a crash
   // must still end as one line naming the file, with no output file left.
   std::cout.flush();
+  // The child's stderr goes to a pipe: the parent passes on its one error
+  // line, and replaces anything else (a sanitizer's crash report, a
+  // message gmsh printed while crashing) by one line of its own.
+  int errPipe[2];
+  if (pipe(errPipe) != 0) return convert(input, output);
   const pid_t child = fork();
-  if (child < 0) return convert(input, output);  // no process to spare: convert here
-  if (child == 0) _exit(convert(input, output));
+  if (child < 0) {  // no process to spare: convert here
+    close(errPipe[0]);
+    close(errPipe[1]);
+    return convert(input, output);
+  }
+  if (child == 0) {
+    close(errPipe[0]);
+    dup2(errPipe[1], STDERR_FILENO);
+    close(errPipe[1]);
+    _exit(convert(input, output));
+  }
+  close(errPipe[1]);
+  std::string childErr;
+  char buffer[4096];
+  for (;;) {
+    const ssize_t n = read(errPipe[0], buffer, sizeof buffer);
+    if (n > 0) childErr.append(buffer, static_cast<std::size_t>(n));
+    else if (n == 0 || errno != EINTR) break;
+  }
+  close(errPipe[0]);
   int status = 0;
   while (waitpid(child, &status, 0) < 0)
     if (errno != EINTR) {
       std::cerr << "coulomb_gmsh2exo: error: lost the conversion of '" << input << "' (waitpid failed)\n";
       return 1;
     }
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return 0;
+  const bool exited = WIFEXITED(status);
+  if (exited && WEXITSTATUS(status) == 0) {
+    std::cerr << childErr;
+    return 0;
+  }
   std::remove(output.c_str());  // no output that looks complete after a failure
-  if (WIFEXITED(status)) return WEXITSTATUS(status);
-  std::cerr << "coulomb_gmsh2exo: error: gmsh crashed (signal " << WTERMSIG(status) << ") reading '" << input
-            << "': the file is damaged or not a mesh gmsh can read\n";
+  const std::string ownPrefix = "coulomb_gmsh2exo: ";
+  const std::size_t own = childErr.rfind("\n" + ownPrefix);
+  const std::size_t ownStart = childErr.rfind(ownPrefix, 0) == 0 ? 0 : (own == std::string::npos ? own : own + 1);
+  if (exited && WEXITSTATUS(status) == 1 && ownStart != std::string::npos) {
+    std::cerr << childErr.substr(ownStart, childErr.find('\n', ownStart) - ownStart) << "\n";
+    return 1;
+  }
+  std::cerr << "coulomb_gmsh2exo: error: gmsh crashed (";
+  if (exited) std::cerr << "exit status " << WEXITSTATUS(status);
+  else std::cerr << "signal " << WTERMSIG(status);
+  std::cerr << ") reading '" << input << "': the file is damaged or not a mesh gmsh can read\n";
   return 1;
 }
