@@ -95,7 +95,7 @@ coulomb_bad_input(newton_out_of_iterations
 
 # Contact pairs.
 coulomb_bad_input(contact_unknown_slave_set "'Contact/Pairs/punch.*'slavee'" CHECK NP 1 2)
-coulomb_bad_input(contact_slave_equals_master "'Contact/Pairs/punch'.*'master'.*both" CHECK)
+coulomb_bad_input(contact_set_lists_overlap "Contact/Pairs/punch: the slave and the master side sets name the same set 'master' but not the same list" CHECK NP 1 2)
 coulomb_bad_input(contact_negative_penalty "'Contact/Pairs/punch/Penalty'")
 coulomb_bad_input(contact_unknown_formulation "'Contact/Pairs/punch/Formulation'")
 coulomb_bad_input(contact_friction_negative_coefficient "'Contact/Pairs/punch/Friction Coefficient'")

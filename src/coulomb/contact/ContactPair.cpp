@@ -1,4 +1,5 @@
 #include "coulomb/contact/ContactPair.hpp"
+#include "coulomb/contact/interface/SelfContactRoles.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -197,13 +198,30 @@ void ContactPair::search() {
   static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact search");
   Teuchos::TimeMonitor scope(*timer);
   std::string failure;
+  SelfContactRoles selfRoles;
   try {
     radius_ = std::max(defaultSearchRadius(*interface_, x_, settings_.searchRadiusFactor), widenedRadius_);
     search_ = searchContactPairs(*interface_, x_, radius_);
+    // Roles from the step start (SelfContactRoles.hpp); the constructor's
+    // first search, before any step, is at the reference configuration.
+    if (interface_->selfContact())
+      selfRoles = restrictToSelfContactRoles(*interface_, stepStartX_.x.empty() ? x_ : stepStartX_, search_);
   } catch (const Error& e) {
     failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();
   }
   throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
+  if (interface_->selfContact()) {
+    // Every rank decided the same roles (SelfContactRoles.hpp).
+    if (selfRoles.droppedLinks > 0 && selfRoles.droppedLinks != droppedSelfLinks_) {
+      std::ostringstream note;
+      note << "Contact/Pairs/" << settings_.name << ": " << selfRoles.droppedLinks
+           << " pairs of facing faces of the self-contact surface could not be given slave and master roles "
+              "(a contact region folding onto itself, or an odd loop of regions) and are left out";
+      notes_.push_back(note.str());
+    }
+    droppedSelfLinks_ = selfRoles.droppedLinks;
+    return;  // every node lies on its own surface: no depth check behind a nearest face
+  }
   // Slave nodes inside the master beyond the radius (bodies that overlap):
   // widen the radius to twice the deepest and search again, at once.
   const auto& comm = *interface_->comm();

@@ -90,7 +90,7 @@ void addValidContactParameters(ParameterList& valid) {
   ParameterList& pair = pairs.sublist("*", false, "a slave/master pair of side sets");
   const ContactPairSettings d;
   pair.set("Slave", "", std::string(io::kRequired) + "slave side set (the finer or curved surface)");
-  pair.set("Master", "", std::string(io::kRequired) + "master side set");
+  pair.set("Master", "", std::string(io::kRequired) + "master side set (the same list as Slave: a surface that may touch itself)");
   pair.set("Formulation", std::string(kFormulations.name(d.formulation)),
            "ALM: Lagrange multipliers (condensed), no penetration at convergence; Penalty: pressure eps_n <-gap>; "
            "MPC: multipoint constraints (slave tied to master: stick all directions, slip normal only + Coulomb "
@@ -232,8 +232,6 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
     COULOMB_REQUIRE(s.slipResetFrequency >= 0 || s.formulation != ContactFormulation::Penalty,
                     where << "Slip Reset Frequency' < 0 (slip direction from the last step's slip) is for ALM and "
                              "MPC pairs; the penalty traction takes its direction from its return map");
-    COULOMB_REQUIRE(s.slave != s.master, "deck: 'Contact/Pairs/" << name << "' names side set '" << s.slave
-                                                                  << "' as both Slave and Master");
     const bool lmm = s.formulation == ContactFormulation::LMM;
     COULOMB_REQUIRE(settings.systemForm == ContactSystemForm::Condensed || lmm ||
                         (s.formulation == ContactFormulation::ALM && !s.frictional()),

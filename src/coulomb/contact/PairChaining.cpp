@@ -55,7 +55,10 @@ PairChaining::PairChaining(const std::vector<std::unique_ptr<ContactPair>>& pair
     for (long long node : pairs[p]->interface().slaveNodes())
       for (std::size_t q = 0; q < n; ++q)
         if (std::binary_search(masters[q].begin(), masters[q].end(), node)) {
-          // Within one pair there is no order to fold in: refused.
+          // Within one pair there is no order to fold in: refused, but for
+          // a self-contact surface, whose roles keep slave and master
+          // nodes apart (SelfContactRoles.hpp).
+          if (q == p && pairs[p]->interface().selfContact()) continue;
           COULOMB_REQUIRE(q != p, "Contact/Pairs/" << pairs[p]->settings().name << ": node " << node + 1
                                                    << " is on both the slave and the master surface of the pair; "
                                                       "its condensed rows cannot take both (leave it out of one side "

@@ -137,16 +137,26 @@ ContactInterface::ContactInterface(const mesh::Mesh& mesh, const std::string& sl
   const SetList master = resolveSets(mesh, masterSet, "master", what);
   slaveName_ = slave.shown;
   masterName_ = master.shown;
-  for (std::size_t index : slave.indices)
-    COULOMB_REQUIRE(std::find(master.indices.begin(), master.indices.end(), index) == master.indices.end(),
-                    what << ": the slave and the master side sets name the same set '"
-                         << mesh::displayName(global.sideSets[index].name, "sideset", global.sideSets[index].id)
-                         << "'; contact needs two different surfaces");
+  // The same sets on both sides: a surface that may touch itself
+  // (SelfContactRoles.hpp gives its faces their roles per load step).
+  std::vector<std::size_t> slaveSorted = slave.indices, masterSorted = master.indices;
+  std::sort(slaveSorted.begin(), slaveSorted.end());
+  std::sort(masterSorted.begin(), masterSorted.end());
+  selfContact_ = slaveSorted == masterSorted;
+  if (!selfContact_)
+    for (std::size_t index : slave.indices)
+      COULOMB_REQUIRE(std::find(master.indices.begin(), master.indices.end(), index) == master.indices.end(),
+                      what << ": the slave and the master side sets name the same set '"
+                           << mesh::displayName(global.sideSets[index].name, "sideset", global.sideSets[index].id)
+                           << "' but not the same list; contact needs two different surfaces, or for a surface "
+                              "touching itself the same list on both sides");
 
   const auto adjacency = fem::nodeElementAdjacency(global);
   slaveFaces_ = collectFaces(mesh, slave, "slave", what, adjacency);
-  masterFaces_ = collectFaces(mesh, master, "master", what, adjacency);
-  {
+  if (selfContact_) {
+    masterFaces_ = slaveFaces_;
+  } else {
+    masterFaces_ = collectFaces(mesh, master, "master", what, adjacency);
     std::set<std::pair<long long, int>> slaveSides;
     for (const ContactFace& f : slaveFaces_) slaveSides.insert({f.element, f.side});
     for (const ContactFace& f : masterFaces_)

@@ -51,7 +51,8 @@ public:
   /// of two bodies' tops, "left_top, right_top"). `what` names the deck
   /// entry asking (e.g. "Contact/punch"), for error messages.
   /// @throws coulomb::Error naming the set when it is unknown, empty, when
-  /// a set is both slave and master, or when a face is in both surfaces.
+  /// a set is in both lists but the lists differ, or when a face is in both
+  /// surfaces. The same list on both sides is a self-contact surface.
   /// Not collective (every rank detects the same errors).
   /// `axisymmetric` (2D): the faces are rings (x = r), the mortar integrals
   /// take 2 pi r (MortarPass).
@@ -63,6 +64,9 @@ public:
   const Teuchos::RCP<const Teuchos::Comm<int>>& comm() const { return comm_; }
   /// The slave side sets' display names, joined by ", ".
   const std::string& slaveSetName() const { return slaveName_; }
+  /// The slave and master lists name the same sets: one surface that may
+  /// touch itself (masterFaces() == slaveFaces(); SelfContactRoles.hpp).
+  bool selfContact() const { return selfContact_; }
 
   /// All slave / master faces (identical on every rank), in side-set order
   /// with duplicates removed.
@@ -98,6 +102,7 @@ public:
 private:
   int dimension_ = 3;
   bool axisymmetric_ = false;
+  bool selfContact_ = false;
   Teuchos::RCP<const Teuchos::Comm<int>> comm_;
   std::string slaveName_, masterName_;
   std::vector<ContactFace> slaveFaces_, masterFaces_;
