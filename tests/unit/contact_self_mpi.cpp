@@ -1,10 +1,12 @@
 // Self-contact (issue 18, item 5): a C-shaped body closing onto itself
-// (xml/c_ring_closing_2d.xml), its inner surface one pair with the same
+// (xml/c_ring_closing_2d.xml) and a tube crushed until its inner walls
+// touch (xml/tube_crush_3d.xml), each inner surface one pair with the same
 // side set as slave and master. The roles the surface's faces get
-// (SelfContactRoles.hpp) make the bottom arm's faces the slave side, so the
-// run must be the ordinary pair bottom_arm_top on top_arm_bottom: the same
-// displacements and pressures to solver tolerance, frictionless and with
-// Coulomb friction; no penetration; only bottom-arm nodes carry pressure.
+// (SelfContactRoles.hpp) make the bottom arm's (wall's) faces the slave
+// side, so each run must be the ordinary pair of those faces on the facing
+// ones: the same displacements and pressures to solver tolerance,
+// frictionless and with Coulomb friction (mu = 0.3, which must change the
+// answer); no penetration; only slave-face nodes carry pressure.
 // np = 1, 2, 3 (ctest MpiTests.np*).
 #include <gtest/gtest.h>
 
@@ -18,14 +20,25 @@
 namespace coulomb::test {
 namespace {
 
-constexpr double kArmThickness = 0.4;  // c_ring2d.geo: t
-constexpr double kFaceSize = 0.1;      // the bottom arm's faces: 1.6 / 16
+/// A shipped self-contact deck and the ordinary pair it must equal.
+struct SelfCase {
+  std::string deck, mesh;
+  std::string pairSlave, pairMaster;  ///< the ordinary pair with the self pair's slave side
+  int axis;                            ///< the slave face lies at X[axis] = at
+  double at, faceSize;                 ///< (reference), faces about faceSize wide
+  std::string forceAxis;               ///< the pair force's normal component ("y")
+};
+
+/// c_ring_closing_2d: the bottom arm's faces (y = 0.4, 0.1 wide) are slave.
+const SelfCase kRing{"c_ring_closing_2d", "c_ring2d.e", "bottom_arm_top", "top_arm_bottom", 1, 0.4, 0.1, "y"};
+/// tube_crush_3d: the bottom wall's inner faces (y = 0.3, at least 0.15 wide) are slave.
+const SelfCase kTube{"tube_crush_3d", "tube3d.e", "inner_bottom", "inner_top", 1, 0.3, 0.15, "y"};
 
 /// The shipped deck, solved to round-off, with the pair's sides and
 /// options replaced.
-ContactRun runRing(const std::string& name, const std::string& slave, const std::string& master,
+ContactRun runCase(const SelfCase& c, const std::string& name, const std::string& slave, const std::string& master,
                    const std::string& options) {
-  ShippedDeck deck("c_ring_closing_2d", "c_ring2d.e");
+  ShippedDeck deck(c.deck, c.mesh);
   deck.replace("name=\"Slave\" type=\"string\" value=\"inner\"/>",
                "name=\"Slave\" type=\"string\" value=\"" + slave + "\"/>" + options);
   deck.replace("name=\"Master\" type=\"string\" value=\"inner\"", "name=\"Master\" type=\"string\" value=\"" + master + "\"");
@@ -35,48 +48,59 @@ ContactRun runRing(const std::string& name, const std::string& slave, const std:
 
 /// Self-contact against the ordinary pair on rank 0: displacements and
 /// pressures over every step, the pair force of the last one; the active
-/// nodes all on the bottom arm's top face, none penetrating.
-void expectSelfContactEqualsPair(const ContactRun& self, const ContactRun& pair) {
-  EXPECT_EQ(self.summary.newtonIterations > 0, true);
+/// nodes all on the slave face, none penetrating.
+void expectSelfContactEqualsPair(const SelfCase& c, const ContactRun& self, const ContactRun& pair) {
   if (worldComm()->getRank() != 0) return;
   for (const char* field : {"displacement_x", "displacement_y", "contact_pressure"})
     EXPECT_LT(nodalDifference(self.results, pair.results, field), 1e-8) << field;
-  const double force = lastGlobal(pair.results, "contact_force_inner_y");
-  EXPECT_LT(force, -1000.0) << "the arms must be pressed together";
-  EXPECT_NEAR(lastGlobal(self.results, "contact_force_inner_y"), force, 1e-8 * std::abs(force));
-  const mesh::GlobalMesh mesh = io::readExodus(shippedMesh("c_ring2d.e"));
+  const std::string forceName = "contact_force_inner_" + c.forceAxis;
+  const double force = lastGlobal(pair.results, forceName);
+  EXPECT_GT(std::abs(force), 1000.0) << "the walls must be pressed together";
+  EXPECT_NEAR(lastGlobal(self.results, forceName), force, 1e-8 * std::abs(force));
+  const mesh::GlobalMesh mesh = io::readExodus(shippedMesh(c.mesh));
   const auto& state = lastNodal(self.results, "contact_state");
   const auto& gap = lastNodal(self.results, "contact_gap");
   int active = 0;
   for (std::size_t i = 0; i < state.size(); ++i) {
     if (state[i] < 0.5) continue;
     ++active;
-    EXPECT_NEAR(mesh.coordinates[2 * i + 1], kArmThickness, 1e-12) << "active node " << i + 1 << " off the bottom arm";
-    EXPECT_GT(gap[i], -1e-6 * kFaceSize) << "node " << i + 1 << " penetrates";
+    EXPECT_NEAR(mesh.coordinates[mesh.dimension * i + c.axis], c.at, 1e-12) << "active node " << i + 1 << " off the slave face";
+    EXPECT_GT(gap[i], -1e-6 * c.faceSize) << "node " << i + 1 << " penetrates";
   }
   EXPECT_GE(active, 10);
 }
 
+const std::string kFriction =
+    "<Parameter name=\"Friction Law\" type=\"string\" value=\"Coulomb\"/>"
+    "<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0.3\"/>";
+
+/// The frictional self pair against the frictional ordinary pair, and
+/// against the frictionless self pair: friction must act.
+void expectFrictionalSelfContactEqualsPair(const SelfCase& c) {
+  const auto self = runCase(c, c.deck + "_self_mu", "inner", "inner", kFriction);
+  const auto pair = runCase(c, c.deck + "_pair_mu", c.pairSlave, c.pairMaster, kFriction);
+  expectSelfContactEqualsPair(c, self, pair);
+  const auto frictionless = runCase(c, c.deck + "_self_mu0", "inner", "inner", "");
+  if (worldComm()->getRank() != 0) return;
+  EXPECT_GT(nodalDifference(self.results, frictionless.results, "displacement_x"), 1e-4);
+}
+
 TEST(ContactSelf, ClosingRingEqualsThePairOfItsTwoArms) {
-  const auto self = runRing("c_ring_self", "inner", "inner", "");
-  const auto pair = runRing("c_ring_pair", "bottom_arm_top", "top_arm_bottom", "");
-  expectSelfContactEqualsPair(self, pair);
+  expectSelfContactEqualsPair(kRing, runCase(kRing, "c_ring_self", "inner", "inner", ""),
+                              runCase(kRing, "c_ring_pair", kRing.pairSlave, kRing.pairMaster, ""));
 }
 
 TEST(ContactSelf, ClosingRingWithCoulombFrictionEqualsThePairOfItsTwoArms) {
-  const std::string friction =
-      "<Parameter name=\"Friction Law\" type=\"string\" value=\"Coulomb\"/>"
-      "<Parameter name=\"Friction Coefficient\" type=\"double\" value=\"0.3\"/>";
-  const auto self = runRing("c_ring_self_mu", "inner", "inner", friction);
-  const auto pair = runRing("c_ring_pair_mu", "bottom_arm_top", "top_arm_bottom", friction);
-  expectSelfContactEqualsPair(self, pair);
-  const auto frictionless = runRing("c_ring_self_mu0", "inner", "inner", "");
-  if (worldComm()->getRank() != 0) return;
-  // Friction acts (the displacements differ from the frictionless run's)
-  // and the pair's force stays inside the cone.
-  EXPECT_GT(nodalDifference(self.results, frictionless.results, "displacement_x"), 1e-4);
-  EXPECT_LE(std::abs(lastGlobal(self.results, "contact_force_inner_x")),
-            0.3 * std::abs(lastGlobal(self.results, "contact_force_inner_y")));
+  expectFrictionalSelfContactEqualsPair(kRing);
+}
+
+TEST(ContactSelf, CrushedTubeEqualsThePairOfItsTwoWalls) {
+  expectSelfContactEqualsPair(kTube, runCase(kTube, "tube_self", "inner", "inner", ""),
+                              runCase(kTube, "tube_pair", kTube.pairSlave, kTube.pairMaster, ""));
+}
+
+TEST(ContactSelf, CrushedTubeWithCoulombFrictionEqualsThePairOfItsTwoWalls) {
+  expectFrictionalSelfContactEqualsPair(kTube);
 }
 
 }  // namespace
