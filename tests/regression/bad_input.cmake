@@ -103,6 +103,9 @@ coulomb_bad_input(contact_friction_huge_coefficient "'Contact/Pairs/punch/Fricti
 coulomb_bad_input(contact_surface_inside_body
                   "Contact/Pairs/joint: slave side set 'left_face': side 2 of element 1 is inside a body [(]element 2"
                   NP 1 2 CDL contact_inside_body.cdl)
+coulomb_bad_input(contact_self_surface_inside_body
+                  "Contact/Pairs/joint: self-contact side set 'left_face': side 2 of element 1 is inside a body [(]element 2"
+                  NP 1 2 CDL contact_inside_body.cdl)
 coulomb_bad_input(contact_quadratic_faces_3d
                   "Contact/Pairs/punch.*slave side set 'slave'.*block 'punch'.*HEX20.*contact on quadratic faces [(]QUAD8[)] is not supported yet"
                   NP 1 2)

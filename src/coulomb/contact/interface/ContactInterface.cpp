@@ -152,7 +152,7 @@ ContactInterface::ContactInterface(const mesh::Mesh& mesh, const std::string& sl
                               "touching itself the same list on both sides");
 
   const auto adjacency = fem::nodeElementAdjacency(global);
-  slaveFaces_ = collectFaces(mesh, slave, "slave", what, adjacency);
+  slaveFaces_ = collectFaces(mesh, slave, selfContact_ ? "self-contact" : "slave", what, adjacency);
   if (selfContact_) {
     masterFaces_ = slaveFaces_;
   } else {
