@@ -14,11 +14,16 @@
 // The walls have nt[] and nb[] elements along x in the three spans
 // [t,a], [a,b], [b,W-t] (default 6, 3, 6 on top and 5, 4, 5 below: the
 // faces across the hole do not match), m through the thickness, k up the
-// side walls, nz along z.
-// Make with: scripts/make_mesh exodus_meshes/tube3d.geo tube3d.e
-DefineConstant[ m = {2, Min 1, Name "m: elements through a wall"} ];
-DefineConstant[ k = {3, Min 1, Name "k: elements up a side wall"} ];
-DefineConstant[ nz = {2, Min 1, Name "nz: elements along z"} ];
+// side walls, nz along z; r multiplies every count (r = 4: about 50k
+// nodes, the benchmark's sizes: scripts/bench tube --ref r).
+// Make with: scripts/make_mesh exodus_meshes/tube3d.geo tube3d.e [-setnumber r 4]
+DefineConstant[ r = {1, Min 0.1, Name "r: refinement factor of every element count"} ];
+DefineConstant[ m0 = {2, Min 1, Name "m0: elements through a wall (r = 1)"} ];
+DefineConstant[ k0 = {3, Min 1, Name "k0: elements up a side wall (r = 1)"} ];
+DefineConstant[ nz0 = {2, Min 1, Name "nz0: elements along z (r = 1)"} ];
+m = Ceil(m0 * r);
+k = Ceil(k0 * r);
+nz = Ceil(nz0 * r);
 W = 3.0;
 H = 1.0;
 t = 0.3;
@@ -27,8 +32,8 @@ b = 1.8;
 D = 1.0;
 xs[] = {0, t, a, b, W - t, W};
 ys[] = {0, t, H - t, H};
-nt[] = {m, 6, 3, 6, m};  // along x per column, top wall (the corners: m)
-nb[] = {m, 5, 4, 5, m};  // bottom wall
+nt[] = {m, Ceil(6 * r), Ceil(3 * r), Ceil(6 * r), m};  // along x per column, top wall (the corners: m)
+nb[] = {m, Ceil(5 * r), Ceil(4 * r), Ceil(5 * r), m};  // bottom wall
 
 // Grid points P(i, j) = 10 j + i + 1, horizontal curves 100 + 10 j + i
 // (P(i,j) -> P(i+1,j)), vertical 200 + 10 j + i (P(i,j) -> P(i,j+1)).
