@@ -202,10 +202,11 @@ void ContactPair::search() {
   try {
     radius_ = std::max(defaultSearchRadius(*interface_, x_, settings_.searchRadiusFactor), widenedRadius_);
     search_ = searchContactPairs(*interface_, x_, radius_);
-    // Roles from the step start (SelfContactRoles.hpp); the constructor's
-    // first search, before any step, is at the reference configuration.
+    // Roles from the step start and now (SelfContactRoles.hpp); the
+    // constructor's first search, before any step, is at the reference
+    // configuration.
     if (interface_->selfContact())
-      selfRoles = restrictToSelfContactRoles(*interface_, stepStartX_.x.empty() ? x_ : stepStartX_, search_);
+      selfRoles = restrictToSelfContactRoles(*interface_, stepStartX_.x.empty() ? x_ : stepStartX_, x_, search_);
   } catch (const Error& e) {
     failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();
   }

@@ -147,18 +147,21 @@ SelfContactRoles decideSelfContactRoles(const std::vector<ContactFace>& faces,
   return out;
 }
 
-SelfContactRoles restrictToSelfContactRoles(const ContactInterface& contact, const InterfaceConfiguration& rolesX,
-                                            SearchResult& search) {
+SelfContactRoles restrictToSelfContactRoles(const ContactInterface& contact, const InterfaceConfiguration& startX,
+                                            const InterfaceConfiguration& x, SearchResult& search) {
   const int dim = contact.dimension();
   const auto& faces = contact.slaveFaces();
   std::vector<int> all(faces.size());
   std::iota(all.begin(), all.end(), 0);
-  const SearchResult everything = searchContactPairs(contact, rolesX, search.radius, all);
+  // The links of both configurations (see the header).
   std::vector<std::pair<int, int>> links;
-  for (std::size_t k = 0; k < everything.slaveFaces.size(); ++k) {
-    const int a = everything.slaveFaces[k];
-    for (int b : everything.candidates[k])
-      if (a < b && selfContactFacesFaceEachOther(dim, faces[a], faces[b], rolesX)) links.emplace_back(a, b);
+  for (const InterfaceConfiguration* config : {&startX, &x}) {
+    const SearchResult everything = searchContactPairs(contact, *config, search.radius, all);
+    for (std::size_t k = 0; k < everything.slaveFaces.size(); ++k) {
+      const int a = everything.slaveFaces[k];
+      for (int b : everything.candidates[k])
+        if (a < b && selfContactFacesFaceEachOther(dim, faces[a], faces[b], *config)) links.emplace_back(a, b);
+    }
   }
   SelfContactRoles roles = decideSelfContactRoles(faces, links);
   SearchResult kept;

@@ -7,7 +7,7 @@
 /// contacting region is covered once and no node carries a multiplier while
 /// it also receives master forces (the condensed rows could not take both).
 ///
-/// The rule, from the configuration at the start of the load step:
+/// The rule, from the configurations at the start of the load step and now:
 ///  1. Links: two faces of the surface that share no node, whose enlarged
 ///     boxes meet (the search radius, ContactSearch.hpp), whose normals
 ///     oppose (n_a . n_b < -kSelfContactOpposing: more than 120 degrees
@@ -58,19 +58,22 @@ bool selfContactFacesFaceEachOther(int dim, const ContactFace& a, const ContactF
                                    const InterfaceConfiguration& x);
 
 /// @brief Restricts `search` (this rank's result of searchContactPairs on a
-/// self-contact interface in the current configuration, radius
-/// search.radius) to the slave faces and their master candidates of the
-/// roles decided in configuration `rolesX`. Not collective; returns the
-/// roles (for notes and tests).
+/// self-contact interface in configuration x, radius search.radius) to the
+/// slave faces and their master candidates of the roles decided from the
+/// links in `startX` and in x together. Not collective; returns the roles
+/// (for notes and tests).
 ///
-/// `rolesX` is the last converged configuration (the step start), not the
-/// current one: a load step's predictor may push one side through the other
-/// by more than a linked face may lie behind (kSelfContactBehind), which
-/// would unlink the very faces that must touch; a converged state has no
-/// such penetration. Contact that begins within the step is found as long
-/// as the faces were within the search radius at its start, the same
-/// condition as for a pair of two surfaces.
-SelfContactRoles restrictToSelfContactRoles(const ContactInterface& contact, const InterfaceConfiguration& rolesX,
-                                            SearchResult& search);
+/// Why both: the links of x alone fail when a load step's predictor pushes
+/// one side through the other by more than a linked face may lie behind
+/// (kSelfContactBehind), which unlinked the very faces that must touch (a
+/// C closing passed its arms through each other); a converged start has no
+/// such penetration. The links of `startX` (the last converged
+/// configuration) alone miss the faces that come within the search radius
+/// only during the step: they are left without mortar values at its end,
+/// and the objective slip of the next step lacks their D^t, M^t (a
+/// frictional tube then settled into another stick zone than the ordinary
+/// pair of its walls).
+SelfContactRoles restrictToSelfContactRoles(const ContactInterface& contact, const InterfaceConfiguration& startX,
+                                            const InterfaceConfiguration& x, SearchResult& search);
 
 }  // namespace coulomb::contact
