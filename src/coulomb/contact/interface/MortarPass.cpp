@@ -184,11 +184,17 @@ void pair2D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
         });
 }
 
-/// A 3D pair: the linear kernel, or the sub-facet one when a face is a
-/// quadratic Quad9 (MortarSegmentQuadratic3D.hpp).
+/// A 3D pair: the linear kernel, or the sub-facet one when a face is
+/// quadratic (MortarSegmentQuadratic3D.hpp). The sub-facet kernel has
+/// Quad9 with Tri3, Quad4, Quad9, and Quad8 / Tri6 with Tri3, Quad4, Quad8,
+/// Tri6 (ContactInterface refuses a pair mixing Quad9 with Quad8 or Tri6).
 template <FaceType S, FaceType Mf>
 void pair3D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
-  if constexpr (S == FaceType::Quad9 || Mf == FaceType::Quad9)
+  constexpr bool quad9 = S == FaceType::Quad9 || Mf == FaceType::Quad9;
+  constexpr bool transformed = transformedSlaveBasis(S) || transformedSlaveBasis(Mf);
+  if constexpr (quad9 && transformed)
+    throw Error("mortar integration: a QUAD9 face with a QUAD8 or TRI6 face");
+  else if constexpr (quad9 || transformed)
     integrateWith<S, Mf>(
         p, s, m,
         [&](const auto& xs, const auto& ns, const auto& xm) {
@@ -213,16 +219,24 @@ void integratePair(const PairContext& p, const ContactFace& s, const ContactFace
     if (sLine3) return mLine3 ? pair2D<F::Line3, F::Line3>(p, s, m) : pair2D<F::Line3, F::Line2>(p, s, m);
     return mLine3 ? pair2D<F::Line2, F::Line3>(p, s, m) : pair2D<F::Line2, F::Line2>(p, s, m);
   }
-  // 3D: Tri3, Quad4 or Quad9 on either side (pair3D picks the kernel).
+  // 3D: Tri3, Quad4, Tri6, Quad8 or Quad9 on either side (pair3D picks the kernel).
   auto withMaster = [&](auto slave) {
     constexpr F S = decltype(slave)::value;
-    if (m.type == F::Tri3) return pair3D<S, F::Tri3>(p, s, m);
-    if (m.type == F::Quad9) return pair3D<S, F::Quad9>(p, s, m);
-    return pair3D<S, F::Quad4>(p, s, m);
+    switch (m.type) {
+      case F::Tri3: return pair3D<S, F::Tri3>(p, s, m);
+      case F::Quad9: return pair3D<S, F::Quad9>(p, s, m);
+      case F::Quad8: return pair3D<S, F::Quad8>(p, s, m);
+      case F::Tri6: return pair3D<S, F::Tri6>(p, s, m);
+      default: return pair3D<S, F::Quad4>(p, s, m);
+    }
   };
-  if (s.type == F::Tri3) return withMaster(std::integral_constant<F, F::Tri3>{});
-  if (s.type == F::Quad9) return withMaster(std::integral_constant<F, F::Quad9>{});
-  return withMaster(std::integral_constant<F, F::Quad4>{});
+  switch (s.type) {
+    case F::Tri3: return withMaster(std::integral_constant<F, F::Tri3>{});
+    case F::Quad9: return withMaster(std::integral_constant<F, F::Quad9>{});
+    case F::Quad8: return withMaster(std::integral_constant<F, F::Quad8>{});
+    case F::Tri6: return withMaster(std::integral_constant<F, F::Tri6>{});
+    default: return withMaster(std::integral_constant<F, F::Quad4>{});
+  }
 }
 
 }  // namespace
@@ -261,6 +275,10 @@ double nodalSupportMeasure(const ContactInterface& contact, const InterfaceConfi
       measure += faceMass<FaceType::Line2, double>(faceCoordinates<FaceType::Line2>(f, x)).De[corner];
     else if (f.type == FaceType::Quad9)
       measure += faceMass<FaceType::Quad9, double>(faceCoordinates<FaceType::Quad9>(f, x)).De[corner];
+    else if (f.type == FaceType::Quad8)  // int N~_j: the transformed basis D_j is dual to
+      measure += faceMass<FaceType::Quad8, double>(faceCoordinates<FaceType::Quad8>(f, x)).De[corner];
+    else if (f.type == FaceType::Tri6)
+      measure += faceMass<FaceType::Tri6, double>(faceCoordinates<FaceType::Tri6>(f, x)).De[corner];
     else if (f.type == FaceType::Tri3)
       measure += faceMass<FaceType::Tri3, double>(faceCoordinates<FaceType::Tri3>(f, x)).De[corner];
     else

@@ -123,14 +123,18 @@ FaceNodes<F, T> faceCornerNormals(const FaceNodes<F, T>& x) {
         for (int i = 0; i < 2; ++i) t[i] += g[b][0] * x[b][i];
       m[a] = unit(std::array<T, 2>{t[1], T(-t[0])});
     }
-  } else if constexpr (F == FaceType::Quad9) {
-    // x_xi × x_eta of the biquadratic face at each node (the Quad4 formula's
-    // orientation: at a corner it is along (x_next - x_a) × (x_prev - x_a)).
-    for (int a = 0; a < 9; ++a) {
-      const FacePoint<F, double> at{double(kQuad9Node[a][0]), double(kQuad9Node[a][1])};
+  } else if constexpr (F == FaceType::Quad9 || F == FaceType::Quad8 || F == FaceType::Tri6) {
+    // x_xi × x_eta of the quadratic face at each node (the Quad4 formula's
+    // orientation: at a corner it is along (x_next - x_a) × (x_prev - x_a);
+    // Tri3's at a Tri6 corner).
+    constexpr int n = FaceTraits<F>::nodes;
+    constexpr double kTri6Node[6][2] = {{0, 0}, {1, 0}, {0, 1}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}};
+    for (int a = 0; a < n; ++a) {
+      const FacePoint<F, double> at = F == FaceType::Tri6 ? FacePoint<F, double>{kTri6Node[a][0], kTri6Node[a][1]}
+                                                          : FacePoint<F, double>{double(kQuad9Node[a][0]), double(kQuad9Node[a][1])};
       const auto g = faceShapeGradients<F, double>(at);
       std::array<T, 3> tx{T(0.0), T(0.0), T(0.0)}, ty{T(0.0), T(0.0), T(0.0)};
-      for (int b = 0; b < 9; ++b)
+      for (int b = 0; b < n; ++b)
         for (int i = 0; i < 3; ++i) {
           tx[i] += g[b][0] * x[b][i];
           ty[i] += g[b][1] * x[b][i];
@@ -166,7 +170,8 @@ NodalNormal averagedNormal(int dimension, const std::vector<FaceAtNode>& faces, 
         case FaceType::Tri3: addFace<FaceType::Tri3>(face, s, target); break;
         case FaceType::Quad4: addFace<FaceType::Quad4>(face, s, target); break;
         case FaceType::Quad9: addFace<FaceType::Quad9>(face, s, target); break;
-        default: throw InternalError("a quadratic 3D face in the nodal normals (ContactInterface refuses them)");
+        case FaceType::Quad8: addFace<FaceType::Quad8>(face, s, target); break;
+        case FaceType::Tri6: addFace<FaceType::Tri6>(face, s, target); break;
       }
     }
   } catch (const Error& e) {
@@ -250,6 +255,8 @@ COULOMB_CONTACT_NORMALS_INSTANTIATE(FaceType::Line3, 6)
 COULOMB_CONTACT_NORMALS_INSTANTIATE(FaceType::Tri3, 9)
 COULOMB_CONTACT_NORMALS_INSTANTIATE(FaceType::Quad4, 12)
 COULOMB_CONTACT_NORMALS_INSTANTIATE(FaceType::Quad9, 27)
+COULOMB_CONTACT_NORMALS_INSTANTIATE(FaceType::Quad8, 24)
+COULOMB_CONTACT_NORMALS_INSTANTIATE(FaceType::Tri6, 18)
 #undef COULOMB_CONTACT_NORMALS_INSTANTIATE
 
 }  // namespace coulomb::contact

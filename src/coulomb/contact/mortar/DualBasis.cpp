@@ -45,15 +45,18 @@ T measureFromTangents(const std::array<std::array<T, FaceTraits<F>::spaceDim>, F
   }
 }
 
-/// Quadrature of the face mass matrices: points, weights, N and dN/dxi (all
-/// coordinate independent). Line2/Tri3 reuse fem's rules (exact for the constant
-/// measure); Quad4 uses 3x3 Gauss (exact for plane quadrilaterals).
+/// Quadrature of the face mass matrices: points, weights, the slave basis N~
+/// (faceTrialValues) and dN/dxi (all coordinate independent). Line2/Tri3 reuse
+/// fem's rules (exact for the constant measure), Tri6 fem's 6-point degree-4
+/// rule and Quad8 its 3x3 Gauss (exact for plane faces); Quad4 uses 3x3
+/// Gauss (exact for plane quadrilaterals).
 template <mesh::FaceType F>
 struct MassRule {
   static constexpr int n = FaceTraits<F>::nodes;
   static constexpr int pd = FaceTraits<F>::paramDim;
   static constexpr int points = F == mesh::FaceType::Line2 ? 2 : F == mesh::FaceType::Line3 ? 5
-                                 : F == mesh::FaceType::Tri3  ? 3 : F == mesh::FaceType::Quad9 ? 16 : 9;
+                                 : F == mesh::FaceType::Tri3  ? 3 : F == mesh::FaceType::Quad9 ? 16
+                                 : F == mesh::FaceType::Tri6  ? 6 : 9;
   std::array<double, points> weight{};
   std::array<NodalValues<F, double>, points> N{};
   std::array<std::array<std::array<double, pd>, n>, points> dN{};
@@ -71,7 +74,7 @@ MassRule<F> makeMassRule() {
     for (int q = 0; q < 5; ++q) {
       const FacePoint<F, double> xi{gx[q]};
       rule.weight[q] = gw[q];
-      rule.N[q] = faceShapeValues<F, double>(xi);
+      rule.N[q] = faceTrialValues<F, double>(xi);
       rule.dN[q] = faceShapeGradients<F, double>(xi);
     }
   } else if constexpr (F == mesh::FaceType::Quad9) {
@@ -86,7 +89,7 @@ MassRule<F> makeMassRule() {
         const int q = 4 * j + i;
         const FacePoint<F, double> xi{gx[i], gx[j]};
         rule.weight[q] = gw[i] * gw[j];
-        rule.N[q] = faceShapeValues<F, double>(xi);
+        rule.N[q] = faceTrialValues<F, double>(xi);
         rule.dN[q] = faceShapeGradients<F, double>(xi);
       }
   } else if constexpr (F == mesh::FaceType::Quad4) {
@@ -98,7 +101,7 @@ MassRule<F> makeMassRule() {
         const int q = 3 * j + i;
         const FacePoint<F, double> xi{gx[i], gx[j]};
         rule.weight[q] = gw[i] * gw[j];
-        rule.N[q] = faceShapeValues<F, double>(xi);
+        rule.N[q] = faceTrialValues<F, double>(xi);
         rule.dN[q] = faceShapeGradients<F, double>(xi);
       }
   } else {
@@ -109,7 +112,7 @@ MassRule<F> makeMassRule() {
       FacePoint<F, double> xi{};
       for (int i = 0; i < FaceTraits<F>::paramDim; ++i) xi[i] = quad.xi[q][i];
       rule.weight[q] = quad.weight[q];
-      rule.N[q] = faceShapeValues<F, double>(xi);
+      rule.N[q] = faceTrialValues<F, double>(xi);
       rule.dN[q] = faceShapeGradients<F, double>(xi);
     }
   }
@@ -223,6 +226,30 @@ COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, Fad3DQuad9Quad4)
 COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, Fad3DQuad9Tri3)
 COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad4, Fad3DQuad4Quad9)
 COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri3, Fad3DTri3Quad9)
+// MortarSegmentQuadratic3D, pairs with a Quad8 or Tri6 face: the slave's
+// type with the input count (PolygonClipping.cpp lists them; Tri3 with 36
+// is above).
+using FadInputs42 = Sacado::Fad::SFad<double, 42>;
+using FadInputs45 = Sacado::Fad::SFad<double, 45>;
+using FadInputs48 = Sacado::Fad::SFad<double, 48>;
+using FadInputs54 = Sacado::Fad::SFad<double, 54>;
+using FadInputs57 = Sacado::Fad::SFad<double, 57>;
+using FadInputs60 = Sacado::Fad::SFad<double, 60>;
+using FadInputs66 = Sacado::Fad::SFad<double, 66>;
+using FadInputs72 = Sacado::Fad::SFad<double, 72>;
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad8, double)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, double)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad8, FadInputs72)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad8, FadInputs66)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad8, FadInputs60)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad8, FadInputs57)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs54)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs60)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs48)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs45)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad4, FadInputs48)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad4, FadInputs42)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri3, FadInputs42)
 #undef COULOMB_CONTACT_DUAL_ALL_FACES
 #undef COULOMB_CONTACT_DUAL_INSTANTIATE
 

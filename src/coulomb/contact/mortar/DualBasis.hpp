@@ -14,7 +14,11 @@
 ///                              (0,1) (-1,0), centre (0,0): biquadratic; its
 ///                              dual basis keeps D_j = int N_j > 0 (A/36,
 ///                              A/9, 4A/9 on a parallelogram of area A), which
-///                              Quad8 and Tri6 do not (negative / zero at corners)
+///                              Quad8 and Tri6 do not (negative / zero at
+///                              corners): theirs is dual to a transformed
+///                              basis N~ (faceTrialValues)
+///   Quad8 on [-1,1]^2           the Quad9 nodes but the centre (serendipity)
+///   Tri6  on the unit simplex   corners, mid-sides of (0,1) (1,2) (2,0)
 ///
 /// Dual basis (thesis §4.3.3, "dual Lagrange multipliers"; Wohlmuth's
 /// biorthogonality): on a slave face gamma_e with standard shape functions N_k,
@@ -81,10 +85,54 @@ inline X lagrange3Derivative(int c, const X& s) {
   return c == 0 ? X(-2.0 * s) : X(s + 0.5 * double(c));
 }
 
+/// Quad8 and Tri6: the edge nodes with the two corners of their edge
+/// (Exodus order: Quad8 4 (0,1), 5 (1,2), 6 (2,3), 7 (3,0); Tri6 3 (0,1),
+/// 4 (1,2), 5 (2,0)).
+inline constexpr int kQuad8Edge[4][3] = {{4, 0, 1}, {5, 1, 2}, {6, 2, 3}, {7, 3, 0}};
+inline constexpr int kTri6Edge[3][3] = {{3, 0, 1}, {4, 1, 2}, {5, 2, 0}};
+/// The weight alpha of the transformed slave basis of Quad8 and Tri6 faces
+/// (faceTrialValues): 1/5, within (1/8, 1/2) where every int N~_j > 0 on a
+/// Quad8 (corners -1/12 + 2 alpha / 3, edges (1 - 2 alpha) / 3 of the area)
+/// and within (0, 1/2) on a Tri6 (corners 2 alpha / 3, edges (1 - 2 alpha) / 3).
+inline constexpr double kTransformedBasisAlpha = 0.2;
+/// Whether the slave displacements of a face type are transformed (Quad8, Tri6).
+constexpr bool transformedSlaveBasis(mesh::FaceType f) {
+  return f == mesh::FaceType::Quad8 || f == mesh::FaceType::Tri6;
+}
+/// The edges of a transformed face type (edge node, corner, corner), and how many; none for the others.
+inline int transformedEdges(mesh::FaceType f, const int (**edges)[3]) {
+  if (f == mesh::FaceType::Quad8) {
+    *edges = kQuad8Edge;
+    return 4;
+  }
+  if (f == mesh::FaceType::Tri6) {
+    *edges = kTri6Edge;
+    return 3;
+  }
+  *edges = nullptr;
+  return 0;
+}
+
 /// @brief Standard (Lagrange) shape functions N_a(xi) of the reference face.
 template <mesh::FaceType F, typename X>
 inline NodalValues<F, X> faceShapeValues(const FacePoint<F, X>& xi) {
-  if constexpr (F == mesh::FaceType::Line2) {
+  if constexpr (F == mesh::FaceType::Tri6) {
+    const X L0 = 1.0 - xi[0] - xi[1], L1 = xi[0], L2 = xi[1];
+    return {X(L0 * (2.0 * L0 - 1.0)), X(L1 * (2.0 * L1 - 1.0)), X(L2 * (2.0 * L2 - 1.0)),
+            X(4.0 * L0 * L1),         X(4.0 * L1 * L2),         X(4.0 * L2 * L0)};
+  } else if constexpr (F == mesh::FaceType::Quad8) {
+    NodalValues<F, X> N{};
+    for (int a = 0; a < 4; ++a) {
+      const double sa = kQuad9Node[a][0], ta = kQuad9Node[a][1];
+      N[a] = 0.25 * (1.0 + sa * xi[0]) * (1.0 + ta * xi[1]) * (sa * xi[0] + ta * xi[1] - 1.0);
+    }
+    for (int a = 4; a < 8; ++a) {
+      const double sa = kQuad9Node[a][0], ta = kQuad9Node[a][1];
+      N[a] = sa == 0 ? X(0.5 * (1.0 - xi[0] * xi[0]) * (1.0 + ta * xi[1]))
+                     : X(0.5 * (1.0 + sa * xi[0]) * (1.0 - xi[1] * xi[1]));
+    }
+    return N;
+  } else if constexpr (F == mesh::FaceType::Line2) {
     return {X(0.5 * (1.0 - xi[0])), X(0.5 * (1.0 + xi[0]))};
   } else if constexpr (F == mesh::FaceType::Line3) {
     return {X(0.5 * xi[0] * (xi[0] - 1.0)), X(0.5 * xi[0] * (xi[0] + 1.0)), X(1.0 - xi[0] * xi[0])};
@@ -104,7 +152,34 @@ inline NodalValues<F, X> faceShapeValues(const FacePoint<F, X>& xi) {
 template <mesh::FaceType F, typename X>
 inline std::array<std::array<X, FaceTraits<F>::paramDim>, FaceTraits<F>::nodes> faceShapeGradients(
     const FacePoint<F, X>& xi) {
-  if constexpr (F == mesh::FaceType::Line2) {
+  if constexpr (F == mesh::FaceType::Tri6) {
+    const X L0 = 1.0 - xi[0] - xi[1], L1 = xi[0], L2 = xi[1];
+    // dL0 = (-1, -1), dL1 = (1, 0), dL2 = (0, 1).
+    return {{{X(1.0 - 4.0 * L0), X(1.0 - 4.0 * L0)},
+             {X(4.0 * L1 - 1.0), X(0.0)},
+             {X(0.0), X(4.0 * L2 - 1.0)},
+             {X(4.0 * (L0 - L1)), X(-4.0 * L1)},
+             {X(4.0 * L2), X(4.0 * L1)},
+             {X(-4.0 * L2), X(4.0 * (L0 - L2))}}};
+  } else if constexpr (F == mesh::FaceType::Quad8) {
+    std::array<std::array<X, 2>, 8> g{};
+    for (int a = 0; a < 4; ++a) {
+      const double sa = kQuad9Node[a][0], ta = kQuad9Node[a][1];
+      g[a][0] = 0.25 * sa * (1.0 + ta * xi[1]) * (2.0 * sa * xi[0] + ta * xi[1]);
+      g[a][1] = 0.25 * ta * (1.0 + sa * xi[0]) * (sa * xi[0] + 2.0 * ta * xi[1]);
+    }
+    for (int a = 4; a < 8; ++a) {
+      const double sa = kQuad9Node[a][0], ta = kQuad9Node[a][1];
+      if (sa == 0) {
+        g[a][0] = -xi[0] * (1.0 + ta * xi[1]);
+        g[a][1] = 0.5 * ta * (1.0 - xi[0] * xi[0]);
+      } else {
+        g[a][0] = 0.5 * sa * (1.0 - xi[1] * xi[1]);
+        g[a][1] = -xi[1] * (1.0 + sa * xi[0]);
+      }
+    }
+    return g;
+  } else if constexpr (F == mesh::FaceType::Line2) {
     (void)xi;
     return {{{X(-0.5)}, {X(0.5)}}};
   } else if constexpr (F == mesh::FaceType::Line3) {
@@ -128,10 +203,40 @@ inline std::array<std::array<X, FaceTraits<F>::paramDim>, FaceTraits<F>::nodes> 
   }
 }
 
-/// @brief Dual shape functions Phi_j = sum_k A_jk N_k at xi, from the coefficients A.
+/// @brief The slave displacement basis the multipliers are dual to: N for
+/// every face but Quad8 and Tri6, whose standard D_j = int N_j is negative
+/// or zero at the corners; for those the transformed basis of Popp,
+/// Wohlmuth, Gee and Wall (2012),
+///   N~_c = N_c + alpha (N_e + N_e')  (corner c, e and e' its two edges),
+///   N~_e = (1 - 2 alpha) N_e          (edge node e),
+/// the same space (sum N~ = 1, the surface unchanged), with every
+/// int N~_j dA > 0 (kTransformedBasisAlpha). The nodal values it
+/// interpolates are transformed too (d = T d~: d_c = d~_c, d_e = (1 - 2
+/// alpha) d~_e + alpha (d~_a + d~_b)); ContactPair carries the contact rows
+/// between the two (docs/architecture.md, "Quadratic faces").
+template <mesh::FaceType F, typename X>
+inline NodalValues<F, X> faceTrialValues(const FacePoint<F, X>& xi) {
+  NodalValues<F, X> N = faceShapeValues<F, X>(xi);
+  if constexpr (transformedSlaveBasis(F)) {
+    const int (*edges)[3] = nullptr;
+    const int count = transformedEdges(F, &edges);
+    NodalValues<F, X> out = N;
+    for (int k = 0; k < count; ++k) {
+      const X Ne = N[edges[k][0]];
+      out[edges[k][0]] = (1.0 - 2.0 * kTransformedBasisAlpha) * Ne;
+      out[edges[k][1]] += kTransformedBasisAlpha * Ne;
+      out[edges[k][2]] += kTransformedBasisAlpha * Ne;
+    }
+    return out;
+  }
+  return N;
+}
+
+/// @brief Dual shape functions Phi_j = sum_k A_jk N~_k at xi, from the
+/// coefficients A (N~ = faceTrialValues: N but on Quad8 and Tri6).
 template <mesh::FaceType F, typename T, typename X>
 inline NodalValues<F, T> dualShapeValues(const NodalMatrix<F, T>& A, const FacePoint<F, X>& xi) {
-  const NodalValues<F, X> N = faceShapeValues<F, X>(xi);
+  const NodalValues<F, X> N = faceTrialValues<F, X>(xi);
   NodalValues<F, T> phi{};
   for (int j = 0; j < FaceTraits<F>::nodes; ++j) {
     phi[j] = 0.0;
@@ -156,11 +261,12 @@ inline std::array<T, FaceTraits<F>::spaceDim> facePoint(const FaceNodes<F, T>& x
 template <mesh::FaceType F, typename T>
 T surfaceJacobian(const FaceNodes<F, T>& x, const FacePoint<F, T>& xi);
 
-/// @brief Element integrals of the standard basis on the current face.
+/// @brief Element integrals of the slave basis (faceTrialValues: N~ = N
+/// but on Quad8 and Tri6) on the current face.
 template <mesh::FaceType F, typename T>
 struct FaceMass {
-  NodalValues<F, T> De{};  ///< De[j] = int N_j dA
-  NodalMatrix<F, T> Me{};  ///< Me[j][k] = int N_j N_k dA
+  NodalValues<F, T> De{};  ///< De[j] = int N~_j dA
+  NodalMatrix<F, T> Me{};  ///< Me[j][k] = int N~_j N~_k dA
 };
 
 /// @brief D_e and M_e of the face with nodal coordinates x.
@@ -182,6 +288,8 @@ COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Line3)
 COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Tri3)
 COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Quad4)
 COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Quad9)
+COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Quad8)
+COULOMB_CONTACT_DUAL_EXTERN(mesh::FaceType::Tri6)
 #undef COULOMB_CONTACT_DUAL_EXTERN
 
 }  // namespace coulomb::contact

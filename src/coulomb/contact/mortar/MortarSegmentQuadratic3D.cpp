@@ -1,5 +1,5 @@
 /// @file MortarSegmentQuadratic3D.cpp
-/// @brief Sub-facet mortar integration of 3D pairs with a Quad9 face (see the header).
+/// @brief Sub-facet mortar integration of 3D pairs with a quadratic face (see the header).
 #include "coulomb/contact/mortar/MortarSegmentQuadratic3D.hpp"
 
 #include "coulomb/contact/mortar/MortarScalarTypes.hpp"
@@ -32,8 +32,38 @@ std::vector<SubFacet> subFacets() {
     return {SubFacet{FaceType::Tri3, 3, {0, 1, 2, -1}, {{{0, 0}, {1, 0}, {0, 1}, {0, 0}}}}};
   } else if constexpr (F == FaceType::Quad4) {
     return {SubFacet{FaceType::Quad4, 4, {0, 1, 2, 3}, {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}}}};
+  } else if constexpr (F == FaceType::Tri6) {
+    // The four triangles between the corners and the mid-sides.
+    constexpr double kTri6Node[6][2] = {{0, 0}, {1, 0}, {0, 1}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}};
+    std::vector<SubFacet> out;
+    for (const std::array<int, 3> t : {std::array<int, 3>{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}}) {
+      SubFacet f;
+      f.type = FaceType::Tri3;
+      f.count = 3;
+      f.node = {t[0], t[1], t[2], -1};
+      for (int c = 0; c < 3; ++c) f.corner[c] = {kTri6Node[t[c]][0], kTri6Node[t[c]][1]};
+      out.push_back(f);
+    }
+    return out;
+  } else if constexpr (F == FaceType::Quad8) {
+    // No centre node: a triangle at each corner (corner, its two
+    // mid-sides) and the quadrilateral of the four mid-sides.
+    std::vector<SubFacet> out;
+    for (const std::array<int, 3> t : {std::array<int, 3>{0, 4, 7}, {1, 5, 4}, {2, 6, 5}, {3, 7, 6}}) {
+      SubFacet f;
+      f.type = FaceType::Tri3;
+      f.count = 3;
+      f.node = {t[0], t[1], t[2], -1};
+      for (int c = 0; c < 3; ++c) f.corner[c] = {double(kQuad9Node[t[c]][0]), double(kQuad9Node[t[c]][1])};
+      out.push_back(f);
+    }
+    SubFacet middle;
+    middle.node = {4, 5, 6, 7};
+    for (int c = 0; c < 4; ++c) middle.corner[c] = {double(kQuad9Node[4 + c][0]), double(kQuad9Node[4 + c][1])};
+    out.push_back(middle);
+    return out;
   } else {
-    static_assert(F == FaceType::Quad9, "sub-facets of Tri3, Quad4 and Quad9 faces");
+    static_assert(F == FaceType::Quad9, "sub-facets of Tri3, Quad4, Tri6, Quad8 and Quad9 faces");
     std::vector<SubFacet> out;
     for (const std::array<int, 4> q : {std::array<int, 4>{0, 4, 8, 7}, {4, 1, 5, 8}, {8, 5, 2, 6}, {7, 8, 6, 3}}) {
       SubFacet f;
@@ -255,6 +285,19 @@ COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad9, FaceType::Quad4)
 COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad9, FaceType::Tri3)
 COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad4, FaceType::Quad9)
 COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Tri3, FaceType::Quad9)
+// Quad8 and Tri6 (transformed slave basis) with each other and the linear faces.
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad8, FaceType::Quad8)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad8, FaceType::Tri6)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad8, FaceType::Quad4)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad8, FaceType::Tri3)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Tri6, FaceType::Tri6)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Tri6, FaceType::Quad8)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Tri6, FaceType::Quad4)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Tri6, FaceType::Tri3)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad4, FaceType::Quad8)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad4, FaceType::Tri6)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Tri3, FaceType::Quad8)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Tri3, FaceType::Tri6)
 #undef COULOMB_QUADRATIC_3D_INSTANTIATE
 
 }  // namespace coulomb::contact

@@ -1,0 +1,214 @@
+// 3D mortar segments with a Quad8 or Tri6 face (issue 18, item 2): the
+// transformed slave basis N~ (DualBasis.hpp, faceTrialValues) and its dual
+// basis (D > 0 where the standard one has D <= 0 at the corners), the patch
+// identities on plane parallel faces segmented on sub-facets
+// (MortarSegmentQuadratic3D.hpp), and the Sacado derivatives against
+// central finite differences on curved faces.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "coulomb/contact/mortar/MortarSegmentQuadratic3D.hpp"
+
+namespace coulomb::contact {
+namespace {
+
+using mesh::FaceType;
+using Q8 = FaceNodes<FaceType::Quad8, double>;
+using T6 = FaceNodes<FaceType::Tri6, double>;
+using Q4 = FaceNodes<FaceType::Quad4, double>;
+using T3 = FaceNodes<FaceType::Tri3, double>;
+constexpr double kAlpha = kTransformedBasisAlpha;
+
+/// The Quad8 of the rectangle [x0, x0 + a] x [y0, y0 + b] at height z
+/// (`bow` lifts the mid-sides, `skew` shears x by y), normal +z.
+Q8 quad8(double x0, double y0, double a, double b, double z, double bow = 0.0, double skew = 0.0) {
+  Q8 x{};
+  for (int k = 0; k < 8; ++k) {
+    const double s = kQuad9Node[k][0], t = kQuad9Node[k][1];
+    x[k] = {x0 + a * (s + 1) / 2 + skew * (t + 1) / 2, y0 + b * (t + 1) / 2, z + (k < 4 ? 0.0 : 0.5 * bow)};
+  }
+  return x;
+}
+/// The same face seen from a body facing it (orientation reversed).
+Q8 reversed(const Q8& x) { return {x[0], x[3], x[2], x[1], x[7], x[6], x[5], x[4]}; }
+
+/// The Tri6 of the triangle p0 p1 p2 at height z, normal +z for a
+/// counter-clockwise p; `bow` lifts the mid-sides.
+T6 tri6(std::array<double, 2> p0, std::array<double, 2> p1, std::array<double, 2> p2, double z, double bow = 0.0) {
+  const std::array<std::array<double, 2>, 3> p{p0, p1, p2};
+  T6 x{};
+  for (int c = 0; c < 3; ++c) x[c] = {p[c][0], p[c][1], z};
+  for (int e = 0; e < 3; ++e) {
+    const auto& a = p[kTri6Edge[e][1]];
+    const auto& b = p[kTri6Edge[e][2]];
+    x[kTri6Edge[e][0]] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, z + bow};
+  }
+  return x;
+}
+T6 reversed(const T6& x) { return {x[0], x[2], x[1], x[5], x[4], x[3]}; }
+
+template <FaceType F>
+FaceNodes<F, double> up() {
+  FaceNodes<F, double> n{};
+  for (auto& v : n) v = {0.0, 0.0, 1.0};
+  return n;
+}
+
+/// Plane parallel faces at the gap g: sum_l M_jl = D_j, g~_j = g D_j,
+/// sum_j D_j = the overlap `area`.
+template <class Segment>
+void expectPatchIdentities(const Segment& r, int nodes, double g, double area) {
+  ASSERT_TRUE(r.contributes);
+  double sumD = 0;
+  for (int j = 0; j < nodes; ++j) {
+    double sumM = 0;
+    for (double m : r.M[j]) sumM += m;
+    EXPECT_NEAR(sumM, r.D[j], 1e-12) << j;
+    EXPECT_NEAR(r.gap[j], g * r.D[j], 1e-12) << j;
+    sumD += r.D[j];
+  }
+  EXPECT_NEAR(sumD, area, 1e-12);
+}
+
+/// A = D_e M_e^-1: int Phi_j N~_k = delta_jk D_e[j].
+template <FaceType F>
+void expectBiorthogonal(const FaceNodes<F, double>& x) {
+  constexpr int n = FaceTraits<F>::nodes;
+  const auto mass = faceMass<F, double>(x);
+  const auto A = dualCoefficients<F, double>(x);
+  for (int j = 0; j < n; ++j)
+    for (int k = 0; k < n; ++k) {
+      double integral = 0;
+      for (int m = 0; m < n; ++m) integral += A[j][m] * mass.Me[m][k];
+      EXPECT_NEAR(integral, j == k ? mass.De[j] : 0.0, 1e-13) << j << " " << k;
+    }
+}
+
+// int N~_j dA on a plane face of area A: Quad8 corners A (-1/12 + 2 alpha/3)
+// = A/20, edges A (1 - 2 alpha)/3 = A/5; Tri6 corners 2 alpha A/3 = 2A/15,
+// edges A/5 — all positive, where the standard ones are -A/12 and 0 at the
+// corners; the dual basis is biorthogonal to N~.
+TEST(Mortar3DTransformed, TransformedBasisHasPositiveD) {
+  const Q8 q = quad8(0.0, 0.0, 2.0, 1.5, 0.0, 0.0, 0.3);
+  const auto quadMass = faceMass<FaceType::Quad8, double>(q);
+  for (int k = 0; k < 8; ++k) EXPECT_NEAR(quadMass.De[k], k < 4 ? 3.0 / 20 : 3.0 / 5, 1e-13) << k;
+  expectBiorthogonal<FaceType::Quad8>(q);
+  const T6 t = tri6({0.0, 0.0}, {2.0, 0.2}, {0.5, 1.5}, 0.0);
+  const double area = 0.5 * (2.0 * 1.5 - 0.2 * 0.5);
+  const auto triMass = faceMass<FaceType::Tri6, double>(t);
+  for (int k = 0; k < 6; ++k) EXPECT_NEAR(triMass.De[k], k < 3 ? 2 * area / 15 : area / 5, 1e-13) << k;
+  expectBiorthogonal<FaceType::Tri6>(t);
+}
+
+// N~ spans the space of N: sum_j N~_j = 1, and N~ interpolates the
+// transformed nodal values (d_c = d~_c, d_e = (1 - 2 alpha) d~_e + alpha
+// (d~_a + d~_b)) to the same field as N the plain ones.
+TEST(Mortar3DTransformed, TransformedBasisSpansTheSameSpace) {
+  const std::array<double, 8> d{0.3, -1.2, 0.7, 2.0, 0.1, -0.4, 1.1, 0.5};
+  std::array<double, 8> dt = d;  // d~ = T^-1 d
+  for (const auto& e : kQuad8Edge) dt[e[0]] = (d[e[0]] - kAlpha * (d[e[1]] + d[e[2]])) / (1 - 2 * kAlpha);
+  for (const std::array<double, 2> xi : {std::array<double, 2>{0.3, -0.6}, {-0.9, 0.2}, {0.0, 0.0}, {1.0, 1.0}}) {
+    const auto N = faceShapeValues<FaceType::Quad8, double>(xi);
+    const auto Nt = faceTrialValues<FaceType::Quad8, double>(xi);
+    double sum = 0, plain = 0, transformed = 0;
+    for (int k = 0; k < 8; ++k) {
+      sum += Nt[k];
+      plain += N[k] * d[k];
+      transformed += Nt[k] * dt[k];
+    }
+    EXPECT_NEAR(sum, 1.0, 1e-14);
+    EXPECT_NEAR(transformed, plain, 1e-13);
+  }
+}
+
+// Plane parallel faces at the gap g, the master covering part of the slave,
+// then all of it (D_j = int N~_j: the covered support's whole weight).
+TEST(Mortar3DTransformed, PlaneParallelFacesGiveThePatchIdentities) {
+  const double g = 0.2;
+  const Q8 slave = quad8(0.0, 0.0, 2.0, 2.0, 0.0, 0.0, 0.2);
+  expectPatchIdentities(integrateQuadraticSegment3D<FaceType::Quad8, FaceType::Quad8, double>(
+                            slave, up<FaceType::Quad8>(), reversed(quad8(0.7, -1.0, 2.3, 2.3, g)), 1e-12),
+                        8, g, 1.3 * 1.3 + 0.05 * 1.3 * 1.3);
+  const auto covering = integrateQuadraticSegment3D<FaceType::Quad8, FaceType::Quad8, double>(
+      slave, up<FaceType::Quad8>(), reversed(quad8(-1.0, -1.0, 4.0, 4.0, g)), 1e-12);
+  expectPatchIdentities(covering, 8, g, 4.0);
+  const auto mass = faceMass<FaceType::Quad8, double>(slave);
+  for (int j = 0; j < 8; ++j) EXPECT_NEAR(covering.D[j], mass.De[j], 1e-12) << j;
+  const Q4 linear{{{0.7, -1.0, g}, {0.7, 1.3, g}, {3.0, 1.3, g}, {3.0, -1.0, g}}};
+  expectPatchIdentities(
+      integrateQuadraticSegment3D<FaceType::Quad8, FaceType::Quad4, double>(slave, up<FaceType::Quad8>(), linear, 1e-12),
+      8, g, 1.3 * 1.3 + 0.05 * 1.3 * 1.3);
+
+  const T6 triangle = tri6({0.0, 0.0}, {2.0, 0.0}, {0.0, 2.0}, 0.0);
+  const auto tri = integrateQuadraticSegment3D<FaceType::Tri6, FaceType::Tri6, double>(
+      triangle, up<FaceType::Tri6>(), reversed(tri6({-1.0, -1.0}, {5.0, -1.0}, {-1.0, 5.0}, g)), 1e-12);
+  expectPatchIdentities(tri, 6, g, 2.0);
+  const auto triMass = faceMass<FaceType::Tri6, double>(triangle);
+  for (int j = 0; j < 6; ++j) EXPECT_NEAR(tri.D[j], triMass.De[j], 1e-12) << j;
+  // A Quad8 master over the part x < 1 of the triangle: area 2 - 0.5.
+  expectPatchIdentities(integrateQuadraticSegment3D<FaceType::Tri6, FaceType::Quad8, double>(
+                            triangle, up<FaceType::Tri6>(), reversed(quad8(-1.0, -1.0, 2.0, 4.0, g)), 1e-12),
+                        6, g, 1.5);
+  // A linear slave under a Tri6 master: D_j = int N_j of the Quad4 (1/4 each).
+  const Q4 linearSlave{{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {1.0, 1.0, 0.0}, {0.0, 1.0, 0.0}}};
+  const auto onTri = integrateQuadraticSegment3D<FaceType::Quad4, FaceType::Tri6, double>(
+      linearSlave, up<FaceType::Quad4>(), reversed(tri6({-1.0, -1.0}, {5.0, -1.0}, {-1.0, 5.0}, g)), 1e-12);
+  expectPatchIdentities(onTri, 4, g, 1.0);
+  for (int j = 0; j < 4; ++j) EXPECT_NEAR(onTri.D[j], 0.25, 1e-12) << j;
+}
+
+/// Central differences of every output against every input (h = 1e-6): the
+/// Sacado derivatives match to 1e-7.
+template <FaceType S, FaceType Mf>
+void checkDerivatives(const FaceNodes<S, double>& xs, const FaceNodes<S, double>& ns, const FaceNodes<Mf, double>& xm) {
+  constexpr int nS = FaceTraits<S>::nodes, nM = FaceTraits<Mf>::nodes, N = segment3DInputs<S, Mf>;
+  const auto lin = linearizeQuadraticSegment3D<S, Mf>(xs, ns, xm, 1e-10);
+  ASSERT_TRUE(lin.value.contributes);
+  const double h = 1e-6;
+  for (int i = 0; i < N; ++i) {
+    auto a = xs, b = ns;
+    auto c = xm;
+    auto input = [&]() -> double& {
+      if (i < 3 * nS) return a[i / 3][i % 3];
+      if (i < 6 * nS) return b[(i - 3 * nS) / 3][i % 3];
+      return c[(i - 6 * nS) / 3][i % 3];
+    };
+    input() += h;
+    const auto plus = integrateQuadraticSegment3D<S, Mf, double>(a, b, c, 1e-10);
+    input() -= 2 * h;
+    const auto minus = integrateQuadraticSegment3D<S, Mf, double>(a, b, c, 1e-10);
+    for (int j = 0; j < nS; ++j) {
+      EXPECT_NEAR((plus.D[j] - minus.D[j]) / (2 * h), lin.dD[j][i], 1e-7) << "D " << j << " input " << i;
+      EXPECT_NEAR((plus.gap[j] - minus.gap[j]) / (2 * h), lin.dGap[j][i], 1e-7) << "gap " << j << " input " << i;
+      for (int l = 0; l < nM; ++l)
+        EXPECT_NEAR((plus.M[j][l] - minus.M[j][l]) / (2 * h), lin.dM[j][l][i], 1e-7) << "M " << j << l << " input " << i;
+    }
+  }
+}
+
+/// Slightly tilted nodal normals.
+template <FaceType F>
+FaceNodes<F, double> tilted() {
+  FaceNodes<F, double> ns{};
+  for (int k = 0; k < FaceTraits<F>::nodes; ++k) {
+    const double tilt = 0.05 * (k % 3) - 0.04 * (k / 3);
+    const double n = std::sqrt(1 + 2 * tilt * tilt);
+    ns[k] = {tilt / n, -tilt / n, 1 / n};
+  }
+  return ns;
+}
+
+TEST(Mortar3DTransformedLinearization, CurvedQuad8AndTri6Faces) {
+  checkDerivatives<FaceType::Quad8, FaceType::Quad8>(quad8(0.0, 0.0, 2.0, 2.0, 0.0, 0.08, 0.1), tilted<FaceType::Quad8>(),
+                                                      reversed(quad8(0.6, -0.5, 2.2, 1.9, 0.15, -0.05)));
+  checkDerivatives<FaceType::Tri6, FaceType::Tri6>(tri6({0.0, 0.0}, {2.0, 0.1}, {0.2, 1.8}, 0.0, 0.06),
+                                                    tilted<FaceType::Tri6>(),
+                                                    reversed(tri6({0.3, -0.4}, {2.5, 0.3}, {-0.2, 2.1}, 0.15, -0.04)));
+  const T3 master{{{0.3, -0.4, 0.15}, {-0.2, 2.1, 0.12}, {2.5, 0.3, 0.2}}};
+  checkDerivatives<FaceType::Tri6, FaceType::Tri3>(tri6({0.0, 0.0}, {2.0, 0.1}, {0.2, 1.8}, 0.0, 0.06),
+                                                    tilted<FaceType::Tri6>(), master);
+}
+
+}  // namespace
+}  // namespace coulomb::contact
