@@ -106,8 +106,8 @@ coulomb_bad_input(contact_surface_inside_body
 coulomb_bad_input(contact_self_surface_inside_body
                   "Contact/Pairs/joint: self-contact side set 'left_face': side 2 of element 1 is inside a body [(]element 2"
                   NP 1 2 CDL contact_inside_body.cdl)
-coulomb_bad_input(contact_quadratic_faces_3d
-                  "Contact/Pairs/punch.*slave side set 'slave'.*block 'punch'.*HEX20.*contact on quadratic faces [(]QUAD8[)] is not supported yet"
+coulomb_bad_input(contact_self_quad8_faces
+                  "Contact/Pairs/punch: self-contact on QUAD8 or TRI6 faces is not supported"
                   NP 1 2)
 coulomb_bad_input(axisymmetric_thickness
                   "'Element Blocks/body/Thickness' has no meaning with 'Problem/Plane Assumption' = 'Axisymmetric'" NP 1 2)

@@ -332,6 +332,19 @@ TEST(ContactJacobian, QuadraticPenalty2DMatchesFiniteDifferences) {
 TEST(ContactJacobian, QuadraticAlm3DMatchesFiniteDifferencesAtEquilibrium) {
   expectTangentMatchesDifferences("contact_patch_3d", "contact_patch3d_hex27.e", "ALM");
 }
+// QUAD8 faces (HEX20 cells): the transformed slave rows (SlaveTransform.hpp)
+// combine the K rows of a node's edges, routed to their owners; penalty
+// forces act on the physical nodes through T^-T. The punch has 5 x 5 faces
+// on the base's 3 x 3: with 4 x 4 the mid-side rows of both meet at x = 0.5
+// and y = 0.5, where the diamond-shaped middle sub-facets of slave and
+// master have vertices on each other's edges, and the central differences
+// straddle the kinks of the overlap there (1.8e-5, ALM and penalty alike).
+TEST(ContactJacobian, QuadraticQuad8Alm3DMatchesFiniteDifferencesAtEquilibrium) {
+  expectTangentMatchesDifferences("contact_patch_3d", "contact_patch3d_hex20_np5.e", "ALM");
+}
+TEST(ContactJacobian, QuadraticQuad8Penalty3DMatchesFiniteDifferences) {
+  expectTangentMatchesDifferences("contact_patch_3d", "contact_patch3d_hex20_np5.e", "Penalty");
+}
 
 TEST(ContactJacobian, Penalty2DMatchesFiniteDifferences) {
   expectTangentMatchesDifferences("hertz2d", "hertz2d.e", "Penalty");

@@ -2,7 +2,8 @@
 // frictionless and with Coulomb friction (stick and imposed slip), with
 // QUAD9 and QUAD8 cells, whose LINE3 contact faces take the standard
 // quadratic dual basis (MortarSegmentCurved2D.hpp), and the 3D patch with
-// HEX27 cells (QUAD9 faces, MortarSegmentQuadratic3D.hpp). np = 1, 2, 3.
+// HEX27 and HEX20 cells (QUAD9 and QUAD8 faces, MortarSegmentQuadratic3D.hpp).
+// np = 1, 2, 3.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -69,28 +70,33 @@ TEST(ContactPatch, QuadraticLine3FacesAxisymmetric) {
   expectUniformPressure(run, current, 14, "y", force);
 }
 
-// xml/contact_patch_3d.xml on its HEX27 mesh (QUAD9 contact faces,
-// segmented on sub-facets, MortarSegmentQuadratic3D.hpp; 4 x 4 slave faces
-// on 3 x 3 master faces): the uniaxial stress E delta, u_z = -delta z, u_x =
-// nu delta x, u_y = nu delta y to round-off, all 81 slave nodes (corners,
-// mid-sides and centres) at the same pressure.
-TEST(ContactPatch, QuadraticQuad9FacesTransmitUniformPressure) {
-  ShippedDeck deck("contact_patch_3d", "contact_patch3d.e");
-  deck.replace(shippedMesh("contact_patch3d.e"), shippedMesh("contact_patch3d_hex27.e"));
-  deck.solveToRoundOff();
-  auto run = runDeckText("contact_patch_3d_hex27", deck.text);
-  const double E = 210000, nu = 0.3, delta = 0.01;
-  double error = 0;
-  forOwnedNodes(*run.simulation, [&](long long, const double* X, const double* u) {
-    error = std::max({error, std::abs(u[2] + delta * X[2]), std::abs(u[0] - nu * delta * X[0]),
-                      std::abs(u[1] - nu * delta * X[1])});
-  });
-  EXPECT_LT(globalMax(error), 1e-9 * delta);
-  EXPECT_LE(run.summary.newtonIterations, 4);
-  if (worldComm()->getRank() != 0) return;
-  const double sigma = E * delta;
-  const double current = sigma / ((1 + nu * delta) * (1 + nu * delta));  // per current area
-  expectUniformPressure(run, current, 81, "z", sigma);
+// xml/contact_patch_3d.xml on its quadratic meshes (4 x 4 slave faces on
+// 3 x 3 master faces): HEX27 (QUAD9 faces, the standard biquadratic dual
+// basis) and HEX20 (QUAD8 faces, the transformed basis of SlaveTransform.hpp,
+// whose rows combine a node's residual with its edges'), both segmented on
+// sub-facets (MortarSegmentQuadratic3D.hpp): the uniaxial stress E delta,
+// u_z = -delta z, u_x = nu delta x, u_y = nu delta y to round-off, every
+// slave node (81 and 65: corners, mid-sides and centres) at the same pressure.
+TEST(ContactPatch, QuadraticQuad9AndQuad8FacesTransmitUniformPressure) {
+  for (const auto& [cells, slaveNodes] : {std::pair<std::string, int>{"hex27", 81}, {"hex20", 65}}) {
+    SCOPED_TRACE(cells);
+    ShippedDeck deck("contact_patch_3d", "contact_patch3d.e");
+    deck.replace(shippedMesh("contact_patch3d.e"), shippedMesh("contact_patch3d_" + cells + ".e"));
+    deck.solveToRoundOff();
+    auto run = runDeckText("contact_patch_3d_" + cells, deck.text);
+    const double E = 210000, nu = 0.3, delta = 0.01;
+    double error = 0;
+    forOwnedNodes(*run.simulation, [&](long long, const double* X, const double* u) {
+      error = std::max({error, std::abs(u[2] + delta * X[2]), std::abs(u[0] - nu * delta * X[0]),
+                        std::abs(u[1] - nu * delta * X[1])});
+    });
+    EXPECT_LT(globalMax(error), 1e-9 * delta);
+    EXPECT_LE(run.summary.newtonIterations, 4);
+    if (worldComm()->getRank() != 0) continue;
+    const double sigma = E * delta;
+    const double current = sigma / ((1 + nu * delta) * (1 + nu * delta));  // per current area
+    expectUniformPressure(run, current, slaveNodes, "z", sigma);
+  }
 }
 
 // Perfect stick below the cone (contact_friction_decks_mpi.cpp,

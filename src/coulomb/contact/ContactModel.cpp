@@ -31,6 +31,7 @@ ContactModel::ContactModel(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>
   // Pairs sharing slave nodes become one pair (PairMerging.hpp).
   for (const auto& pair : mergePairsSharingSlaveNodes(mesh, settings.pairs))
     pairs_.push_back(std::make_unique<ContactPair>(mesh, ownedDofMap, pair, model, settings.systemForm));
+  for (const auto& pair : pairs_) transformedSlaves_ = transformedSlaves_ || pair->transformedSlaves();
   pairSummaries_.resize(pairs_.size());
   if (!saddlePoint()) {
     chaining_ = std::make_unique<PairChaining>(pairs_);
@@ -191,7 +192,21 @@ Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMat
   // columns, with a list of the touched ones; K_c columns outside K's
   // column map in a small hash map.
   std::map<GlobalOrdinal, std::vector<std::pair<GlobalOrdinal, double>>> transformRows;
-  for (const auto* part : {&contributions_.transform, &contributions_.tangentTransform})
+  std::vector<linalg::MatrixTriplet> routed;
+  if (transformedSlaves_) {
+    // Quad8 / Tri6 slave rows combine the K rows of neighbouring nodes
+    // (SlaveTransform.hpp), which another rank may own: every coefficient
+    // goes to the owner of its column (route by column: swap, route, swap).
+    for (const auto* part : {&contributions_.transform, &contributions_.tangentTransform})
+      for (const auto& t : *part) routed.push_back({t.column, t.row, t.value});
+    routed = linalg::onRowOwners(routed, *map_);
+    for (auto& t : routed) std::swap(t.row, t.column);
+  }
+  const std::vector<const std::vector<linalg::MatrixTriplet>*> parts =
+      transformedSlaves_ ? std::vector<const std::vector<linalg::MatrixTriplet>*>{&routed}
+                         : std::vector<const std::vector<linalg::MatrixTriplet>*>{&contributions_.transform,
+                                                                                  &contributions_.tangentTransform};
+  for (const auto* part : parts)
     for (const auto& t : *part) transformRows[t.row].push_back({t.column, t.value});
   std::vector<double> dense(transformRows.empty() ? 0 : columns.getNodeNumElements(), 0.0);
   std::vector<char> touched(dense.size(), 0);

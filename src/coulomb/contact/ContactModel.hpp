@@ -174,6 +174,9 @@ private:
   /// The order of the condensed updates and the rows of slave nodes that
   /// are other pairs' master nodes (null in the saddle-point form).
   std::unique_ptr<PairChaining> chaining_;
+  /// A pair has Quad8 / Tri6 slave faces: condensation coefficients may
+  /// refer to other ranks' rows of K (condensedTangent routes them).
+  bool transformedSlaves_ = false;
   Teuchos::RCP<const Map> saddlePointMap_;
   int dim_;
   Teuchos::RCP<const Map> map_;

@@ -1,5 +1,6 @@
 #include "coulomb/contact/ContactPair.hpp"
 #include "coulomb/contact/interface/SelfContactRoles.hpp"
+#include "coulomb/contact/interface/SlaveTransform.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -106,6 +107,10 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
       for (int c : condition.components) prescribed_[i][c] = true;
     }
   }
+  slaveTransform_ = std::make_unique<SlaveTransform>(*interface_, prescribed_, what);
+  COULOMB_REQUIRE(!slaveTransform_->active() || !interface_->selfContact(),
+                  what << ": self-contact on QUAD8 or TRI6 faces is not supported (their transformed slave rows "
+                          "need the slave and master nodes apart)");
   const std::size_t owned = interface_->ownedSlaveNodes().size();
   // eps_n per owned slave node: the deck's value, or the automatic one.
   penalty_.assign(owned, settings.penalty);
@@ -356,16 +361,30 @@ PairIterationSummary ContactPair::updateNodes(const Vector* bulkResidual, const 
   Teuchos::ArrayRCP<const double> r;
   if (bulkResidual != nullptr) r = bulkResidual->getData(0);
   // The node's bulk residual (zero on prescribed components) and z.
+  // Quad8 / Tri6 slave faces: the transformed residual r~_j = sum_k T_kj r_k
+  // (SlaveTransform.hpp), from the residual of every interface node.
+  std::vector<double> gathered;
+  if (slaveTransform_->active() && bulkResidual != nullptr) gathered = gather_->gatherValues(*bulkResidual);
   auto complete = [&](SlaveNode& n) {
-    for (int c = 0; c < dim_ && bulkResidual != nullptr; ++c)
-      if (!n.prescribed[c]) n.residual[c] = r[map.getLocalElement(static_cast<GlobalOrdinal>(dim_ * n.node + c))];
+    for (int c = 0; c < dim_ && bulkResidual != nullptr; ++c) {
+      if (n.prescribed[c]) continue;
+      if (gathered.empty()) {
+        n.residual[c] = r[map.getLocalElement(static_cast<GlobalOrdinal>(dim_ * n.node + c))];
+        continue;
+      }
+      n.residual[c] = 0.0;
+      for (const auto& term : slaveTransform_->rowTerms(n.slave)) {
+        const int i = interface_->interfaceNodeIndex(interface_->slaveNodes()[term.slave]);
+        if (!prescribed_[i][c]) n.residual[c] += term.coefficient * gathered[static_cast<std::size_t>(i) * dim_ + c];
+      }
+    }
     if (z != nullptr) n.multiplier = (*z)[n.index];
   };
   const std::size_t owned = nodes_.size();
   COULOMB_CHECK(z == nullptr || z->size() == owned, "one multiplier per owned slave node");
 
   // Stage 1 (values): the new states.
-  const std::vector<SlaveNodeState> before = nodes_;
+  const std::vector<SlaveNodeState> previousStates = nodes_;
   PairIterationSummary summary;
   std::string failure;
   std::vector<char> flags(owned, 0);
@@ -401,6 +420,15 @@ PairIterationSummary ContactPair::updateNodes(const Vector* bulkResidual, const 
   // the rest of a large slave surface costs a plain double pass.
   differentiate(flags);
   RowSink sink(out, *interface_, prescribed_, multiplierBlockOffset_);
+  ContactContributions before;  // the sizes of out's lists before this pair's rows
+  if (slaveTransform_->active()) {
+    before.transform.resize(out.transform.size());
+    before.tangentTransform.resize(out.tangentTransform.size());
+    before.contactResidual.resize(out.contactResidual.size());
+    before.contactStiffness.resize(out.contactStiffness.size());
+    before.prescribedForce.resize(out.prescribedForce.size());
+    before.multipliers.columns.resize(out.multipliers.columns.size());
+  }
   std::array<DerivativeRow, 3> dw;
   for (std::size_t i = 0; i < owned; ++i) {
     SlaveNode n = slaveNode(i, flags[i] != 0);
@@ -411,7 +439,14 @@ PairIterationSummary ContactPair::updateNodes(const Vector* bulkResidual, const 
     }
     formulation_->emit(n, sink, summary);
   }
-  addForceIncrements(before, summary);
+  if (slaveTransform_->active()) {
+    const bool condensed = z == nullptr && (settings_.formulation == ContactFormulation::ALM ||
+                                            settings_.formulation == ContactFormulation::MPC);
+    slaveTransform_->toSystemRows(out, before, condensed, interface_->ownedSlaveNodes(), [&](long long node, int c) {
+      return r[map.getLocalElement(static_cast<GlobalOrdinal>(dim_ * node + c))];
+    });
+  }
+  addForceIncrements(previousStates, summary);
   reduceSummary(summary);
   return summary;
 }

@@ -24,6 +24,7 @@
 #include "coulomb/contact/interface/ContactSearch.hpp"
 #include "coulomb/contact/ContactSettings.hpp"
 #include "coulomb/contact/interface/MortarPass.hpp"
+#include "coulomb/contact/interface/SlaveTransform.hpp"
 #include "coulomb/contact/formulation/Formulation.hpp"
 #include "coulomb/core/TpetraTypes.hpp"
 #include "coulomb/fem/ModelSettings.hpp"
@@ -42,6 +43,8 @@ public:
 
   const ContactPairSettings& settings() const { return settings_; }
   const ContactInterface& interface() const { return *interface_; }
+  /// The slave surface has Quad8 / Tri6 faces (SlaveTransform.hpp).
+  bool transformedSlaves() const { return slaveTransform_->active(); }
 
   /// A new (sub-)step of deck step `deckStep` (1-based; StepController::nominalStep):
   /// the next update searches; the state is saved for restoreStep().
@@ -139,6 +142,8 @@ private:
   ContactPairSettings settings_;
   std::unique_ptr<ContactInterface> interface_;
   std::unique_ptr<InterfaceGather> gather_;
+  /// Quad8 / Tri6 slave faces: their transformed rows (SlaveTransform.hpp).
+  std::unique_ptr<SlaveTransform> slaveTransform_;
   int dim_;
   PairConstants constants_;
   std::unique_ptr<Formulation> formulation_;

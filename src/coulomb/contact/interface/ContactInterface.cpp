@@ -84,15 +84,9 @@ std::vector<ContactFace> collectFaces(const mesh::Mesh& mesh, const SetList& set
         throw Error(what + ": " + role + " side set '" + shown + "', element " + std::to_string(face.element + 1) +
                     ": " + e.what());
       }
-      // Quadratic faces: Line3 in 2D and Quad9 in 3D, whose standard
-      // quadratic dual bases keep D positive (MortarSegmentCurved2D,
-      // MortarSegmentQuadratic3D). Tri6 and Quad8 need a transformed basis
-      // (not yet), so a pair refuses them rather than treating them as linear.
-      COULOMB_REQUIRE(face.type != mesh::FaceType::Tri6 && face.type != mesh::FaceType::Quad8,
-                      what << ": " << role << " side set '" << shown << "' is on element block '"
-                           << mesh::displayName(block.name, "block", block.id) << "' of "
-                           << mesh::toString(block.cellType) << " cells: contact on quadratic faces ("
-                           << mesh::toString(face.type) << ") is not supported yet");
+      // Quadratic faces: Line3 in 2D and Quad9 in 3D keep their standard
+      // quadratic dual bases (D_j > 0); Quad8 and Tri6 take the transformed
+      // one (DualBasis.hpp, SlaveTransform.hpp).
       // A face with an element on its other side is inside a body (a merged
       // interface, or a set drawn through a body): it can never touch anything.
       const long long across = fem::elementAcrossFace(global, adjacency, face.element, face.side);
@@ -231,6 +225,13 @@ InterfaceGather::InterfaceGather(const ContactInterface& contact, const Teuchos:
 }
 
 InterfaceGather::~InterfaceGather() = default;
+
+std::vector<double> InterfaceGather::gatherValues(const Vector& owned) const {
+  Vector replicated(replicatedMap_);
+  replicated.doImport(owned, *import_, Tpetra::INSERT);
+  const auto values = replicated.getData(0);
+  return std::vector<double>(values.begin(), values.end());
+}
 
 InterfaceConfiguration InterfaceGather::gather(const Vector& ownedDisplacement) const {
   Vector replicated(replicatedMap_);

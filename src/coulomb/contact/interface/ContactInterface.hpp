@@ -15,7 +15,8 @@
 /// below) all current interface coordinates are replicated.
 ///
 /// Faces: 2D meshes give Line2 faces (Line3 of quadratic cells), 3D meshes
-/// Tri3 (Tet4 sides), Quad4 (Hex8 sides) or Quad9 (Hex27 sides); face nodes
+/// Tri3 (Tet4 sides), Quad4 (Hex8 sides), Tri6 (Tet10), Quad8 (Hex20) or
+/// Quad9 (Hex27 sides); face nodes
 /// are in the outward order of fem::faceLocalNodes
 /// (right-hand rule / (dy, -dx) normal points out of the element).
 #include <array>
@@ -144,6 +145,9 @@ public:
   /// Collective: x = X + u at every interface node, on every rank.
   /// `ownedDisplacement` must live on the map given to the constructor.
   InterfaceConfiguration gather(const Vector& ownedDisplacement) const;
+  /// Collective: the values of any vector on the same map at every interface
+  /// node, on every rank (`dimension` per node; e.g. the bulk residual).
+  std::vector<double> gatherValues(const Vector& owned) const;
 
 private:
   const ContactInterface& contact_;
