@@ -99,23 +99,29 @@ TEST(FrictionPatch, ThreeDimensionalSlipOnMatchingMeshesCarriesMuP) {
   EXPECT_EQ(nodes.slip, 16);
 }
 
-// The same on the HEX27 patch mesh (QUAD9 contact faces, the biquadratic
-// dual basis; issue 18, item 2): stick exact at all 81 slave nodes (corners,
-// mid-sides, centres), and the imposed slip carrying mu p at every one.
+// The same on the HEX27 and HEX20 patch meshes (QUAD9 contact faces with
+// the biquadratic dual basis, QUAD8 faces with the transformed one and its
+// transformed slip, SlaveTransform.hpp; issue 18, item 2): stick exact at
+// every slave node (81, 65: corners, mid-sides, centres), and the imposed
+// slip carrying mu p at every one.
 TEST(FrictionPatch, ThreeDimensionalQuadraticStickIsExactAndSlipCarriesMuP) {
-  const double p = kE * 0.01, tau = kPatch3dShear;
-  auto stick = runDeckText("friction_patch_3d_stick_hex27", stickPatch3dDeck("contact_patch3d_hex27.e"));
-  EXPECT_LT(stickPatch3dError(*stick.simulation), 1e-8 * 0.01);
-  ShippedDeck slipDeck("friction_patch_3d", "contact_patch3d.e");
-  slipDeck.replace(shippedMesh("contact_patch3d.e"), shippedMesh("contact_patch3d_hex27.e"));
-  auto slip = runDeckText("friction_patch_3d_slip_hex27", slipDeck.text);
-  if (worldComm()->getRank() != 0) return;
-  const double area = (1 + 0.003) * (1 + 0.003);  // tractions per current area
-  const auto stuck = checkTractions(stick.results, [&](double) { return -tau / area; }, 1e-8 * p, 3);
-  EXPECT_EQ(stuck.stick, 81);
-  EXPECT_NEAR(lastGlobal(stick.results, "contact_force_punch_x"), -tau, 1e-8 * p);
-  const auto slipping = checkTractions(slip.results, [](double pressure) { return -kMu * pressure; }, 1e-8 * p, 3);
-  EXPECT_EQ(slipping.slip, 81);
+  for (const auto& [cells, slaveNodes] : {std::pair<std::string, int>{"hex27", 81}, {"hex20", 65}}) {
+    SCOPED_TRACE(cells);
+    const double p = kE * 0.01, tau = kPatch3dShear;
+    const std::string mesh = "contact_patch3d_" + cells + ".e";
+    auto stick = runDeckText("friction_patch_3d_stick_" + cells, stickPatch3dDeck(mesh));
+    EXPECT_LT(stickPatch3dError(*stick.simulation), 1e-8 * 0.01);
+    ShippedDeck slipDeck("friction_patch_3d", "contact_patch3d.e");
+    slipDeck.replace(shippedMesh("contact_patch3d.e"), shippedMesh(mesh));
+    auto slip = runDeckText("friction_patch_3d_slip_" + cells, slipDeck.text);
+    if (worldComm()->getRank() != 0) continue;
+    const double area = (1 + 0.003) * (1 + 0.003);  // tractions per current area
+    const auto stuck = checkTractions(stick.results, [&](double) { return -tau / area; }, 1e-8 * p, 3);
+    EXPECT_EQ(stuck.stick, slaveNodes);
+    EXPECT_NEAR(lastGlobal(stick.results, "contact_force_punch_x"), -tau, 1e-8 * p);
+    const auto slipping = checkTractions(slip.results, [](double pressure) { return -kMu * pressure; }, 1e-8 * p, 3);
+    EXPECT_EQ(slipping.slip, slaveNodes);
+  }
 }
 
 }  // namespace

@@ -53,8 +53,24 @@ std::array<double, 3> ContactPair::weightedSlip(const NodalMortarEntry& entry,
   std::array<double, 3> w{};
   if (derivative)
     for (auto& row : *derivative) row.clear();
-  const double* xj = point(x_, entry.node);
-  const double* xtj = point(stepStartX_, entry.node);
+  // The slave node's own position is its transformed one on Quad8 / Tri6
+  // faces, x~_j = sum_k T^-1_jk x_k (the variables D is diagonal in,
+  // SlaveTransform.hpp): the terms (k, T^-1_jk), {(j, 1)} elsewhere.
+  const auto& own = slaveTransform_->forceTerms(interface_->slaveNodeIndex(entry.node));
+  std::array<double, 3> xjValue{}, xtjValue{};
+  for (const auto& term : own) {
+    const long long k = interface_->slaveNodes()[term.slave];
+    for (int c = 0; c < dim_; ++c) {
+      xjValue[c] += term.coefficient * point(x_, k)[c];
+      xtjValue[c] += term.coefficient * point(stepStartX_, k)[c];
+    }
+  }
+  const double* xj = xjValue.data();
+  const double* xtj = xtjValue.data();
+  // row += value d x~_j,c / dx
+  auto addOwn = [&](DerivativeRow& row, int c, double value) {
+    for (const auto& term : own) row[{interface_->slaveNodes()[term.slave], c}] += value * term.coefficient;
+  };
   if (objective) {
     // Union of the master nodes of now and then.
     std::map<long long, std::pair<double, double>> masters;
@@ -71,7 +87,7 @@ std::array<double, 3> ContactPair::weightedSlip(const NodalMortarEntry& entry,
           const double* xl = point(x_, l);
           const auto dM = entry.dM.find(l);
           if (dM != entry.dM.end()) addScaled(row, dM->second, xj[c] - xl[c]);
-          row[{entry.node, c}] += m.first - m.second;
+          addOwn(row, c, m.first - m.second);
           row[{l, c}] -= m.first - m.second;
         }
       }
@@ -86,7 +102,7 @@ std::array<double, 3> ContactPair::weightedSlip(const NodalMortarEntry& entry,
       for (int c = 0; c < dim_; ++c) {
         auto& row = (*derivative)[c];
         addScaled(row, entry.dD, -(xj[c] - xtj[c]));
-        row[{entry.node, c}] -= entry.D;
+        addOwn(row, c, -entry.D);
         for (const auto& [l, m] : entry.M) {
           const auto dM = entry.dM.find(l);
           if (dM != entry.dM.end()) addScaled(row, dM->second, point(x_, l)[c] - point(stepStartX_, l)[c]);
