@@ -99,13 +99,14 @@ TEST(FrictionPatch, ThreeDimensionalSlipOnMatchingMeshesCarriesMuP) {
   EXPECT_EQ(nodes.slip, 16);
 }
 
-// The same on the HEX27 and HEX20 patch meshes (QUAD9 contact faces with
-// the biquadratic dual basis, QUAD8 faces with the transformed one and its
-// transformed slip, SlaveTransform.hpp; issue 18, item 2): stick exact at
-// every slave node (81, 65: corners, mid-sides, centres), and the imposed
-// slip carrying mu p at every one.
+// The same on the HEX27, HEX20 and TET10 patch meshes (QUAD9 contact faces
+// with the biquadratic dual basis, QUAD8 and TRI6 faces with the
+// transformed one and its transformed slip, SlaveTransform.hpp; issue 18,
+// item 2): stick exact at every slave node (81, 65, 81: corners, mid-sides,
+// centres), and the imposed slip carrying mu p at every one.
 TEST(FrictionPatch, ThreeDimensionalQuadraticStickIsExactAndSlipCarriesMuP) {
-  for (const auto& [cells, slaveNodes] : {std::pair<std::string, int>{"hex27", 81}, {"hex20", 65}}) {
+  for (const auto& [cells, slaveNodes] :
+       {std::pair<std::string, int>{"hex27", 81}, {"hex20", 65}, {"tet10", 81}}) {
     SCOPED_TRACE(cells);
     const double p = kE * 0.01, tau = kPatch3dShear;
     const std::string mesh = "contact_patch3d_" + cells + ".e";

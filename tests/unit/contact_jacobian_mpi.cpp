@@ -345,6 +345,10 @@ TEST(ContactJacobian, QuadraticQuad8Alm3DMatchesFiniteDifferencesAtEquilibrium) 
 TEST(ContactJacobian, QuadraticQuad8Penalty3DMatchesFiniteDifferences) {
   expectTangentMatchesDifferences("contact_patch_3d", "contact_patch3d_hex20_np5.e", "Penalty");
 }
+// TRI6 faces (TET10 cells), the same transformed rows.
+TEST(ContactJacobian, QuadraticTri6Alm3DMatchesFiniteDifferencesAtEquilibrium) {
+  expectTangentMatchesDifferences("contact_patch_3d", "contact_patch3d_tet10.e", "ALM");
+}
 
 TEST(ContactJacobian, Penalty2DMatchesFiniteDifferences) {
   expectTangentMatchesDifferences("hertz2d", "hertz2d.e", "Penalty");

@@ -73,12 +73,15 @@ TEST(ContactPatch, QuadraticLine3FacesAxisymmetric) {
 // xml/contact_patch_3d.xml on its quadratic meshes (4 x 4 slave faces on
 // 3 x 3 master faces): HEX27 (QUAD9 faces, the standard biquadratic dual
 // basis) and HEX20 (QUAD8 faces, the transformed basis of SlaveTransform.hpp,
-// whose rows combine a node's residual with its edges'), both segmented on
-// sub-facets (MortarSegmentQuadratic3D.hpp): the uniaxial stress E delta,
-// u_z = -delta z, u_x = nu delta x, u_y = nu delta y to round-off, every
-// slave node (81 and 65: corners, mid-sides and centres) at the same pressure.
-TEST(ContactPatch, QuadraticQuad9AndQuad8FacesTransmitUniformPressure) {
-  for (const auto& [cells, slaveNodes] : {std::pair<std::string, int>{"hex27", 81}, {"hex20", 65}}) {
+// whose rows combine a node's residual with its edges'), and TET10
+// (contact_patch3d_tet.geo: 32 structured TRI6 slave faces on 44
+// unstructured master faces, transformed too), all segmented on sub-facets
+// (MortarSegmentQuadratic3D.hpp): the uniaxial stress E delta, u_z = -delta
+// z, u_x = nu delta x, u_y = nu delta y to round-off, every slave node (81,
+// 65, 81: corners, mid-sides and centres) at the same pressure.
+TEST(ContactPatch, Quadratic3DFacesTransmitUniformPressure) {
+  for (const auto& [cells, slaveNodes] :
+       {std::pair<std::string, int>{"hex27", 81}, {"hex20", 65}, {"tet10", 81}}) {
     SCOPED_TRACE(cells);
     ShippedDeck deck("contact_patch_3d", "contact_patch3d.e");
     deck.replace(shippedMesh("contact_patch3d.e"), shippedMesh("contact_patch3d_" + cells + ".e"));
