@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "QuadraticSegmentChecks.hpp"
 #include "coulomb/contact/mortar/MortarSegmentQuadratic3D.hpp"
 
 namespace coulomb::contact {
@@ -55,21 +56,6 @@ FaceNodes<F, double> up() {
   return n;
 }
 
-/// Plane parallel faces at the gap g: sum_l M_jl = D_j, g~_j = g D_j,
-/// sum_j D_j = the overlap `area`.
-template <class Segment>
-void expectPatchIdentities(const Segment& r, int nodes, double g, double area) {
-  ASSERT_TRUE(r.contributes);
-  double sumD = 0;
-  for (int j = 0; j < nodes; ++j) {
-    double sumM = 0;
-    for (double m : r.M[j]) sumM += m;
-    EXPECT_NEAR(sumM, r.D[j], 1e-12) << j;
-    EXPECT_NEAR(r.gap[j], g * r.D[j], 1e-12) << j;
-    sumD += r.D[j];
-  }
-  EXPECT_NEAR(sumD, area, 1e-12);
-}
 
 /// A = D_e M_e^-1: int Phi_j N~_k = delta_jk D_e[j].
 template <FaceType F>
@@ -127,65 +113,37 @@ TEST(Mortar3DTransformed, TransformedBasisSpansTheSameSpace) {
 TEST(Mortar3DTransformed, PlaneParallelFacesGiveThePatchIdentities) {
   const double g = 0.2;
   const Q8 slave = quad8(0.0, 0.0, 2.0, 2.0, 0.0, 0.0, 0.2);
-  expectPatchIdentities(integrateQuadraticSegment3D<FaceType::Quad8, FaceType::Quad8, double>(
+  test::expectPatchIdentities(integrateQuadraticSegment3D<FaceType::Quad8, FaceType::Quad8, double>(
                             slave, up<FaceType::Quad8>(), reversed(quad8(0.7, -1.0, 2.3, 2.3, g)), 1e-12),
                         8, g, 1.3 * 1.3 + 0.05 * 1.3 * 1.3);
   const auto covering = integrateQuadraticSegment3D<FaceType::Quad8, FaceType::Quad8, double>(
       slave, up<FaceType::Quad8>(), reversed(quad8(-1.0, -1.0, 4.0, 4.0, g)), 1e-12);
-  expectPatchIdentities(covering, 8, g, 4.0);
+  test::expectPatchIdentities(covering, 8, g, 4.0);
   const auto mass = faceMass<FaceType::Quad8, double>(slave);
   for (int j = 0; j < 8; ++j) EXPECT_NEAR(covering.D[j], mass.De[j], 1e-12) << j;
   const Q4 linear{{{0.7, -1.0, g}, {0.7, 1.3, g}, {3.0, 1.3, g}, {3.0, -1.0, g}}};
-  expectPatchIdentities(
+  test::expectPatchIdentities(
       integrateQuadraticSegment3D<FaceType::Quad8, FaceType::Quad4, double>(slave, up<FaceType::Quad8>(), linear, 1e-12),
       8, g, 1.3 * 1.3 + 0.05 * 1.3 * 1.3);
 
   const T6 triangle = tri6({0.0, 0.0}, {2.0, 0.0}, {0.0, 2.0}, 0.0);
   const auto tri = integrateQuadraticSegment3D<FaceType::Tri6, FaceType::Tri6, double>(
       triangle, up<FaceType::Tri6>(), reversed(tri6({-1.0, -1.0}, {5.0, -1.0}, {-1.0, 5.0}, g)), 1e-12);
-  expectPatchIdentities(tri, 6, g, 2.0);
+  test::expectPatchIdentities(tri, 6, g, 2.0);
   const auto triMass = faceMass<FaceType::Tri6, double>(triangle);
   for (int j = 0; j < 6; ++j) EXPECT_NEAR(tri.D[j], triMass.De[j], 1e-12) << j;
   // A Quad8 master over the part x < 1 of the triangle: area 2 - 0.5.
-  expectPatchIdentities(integrateQuadraticSegment3D<FaceType::Tri6, FaceType::Quad8, double>(
+  test::expectPatchIdentities(integrateQuadraticSegment3D<FaceType::Tri6, FaceType::Quad8, double>(
                             triangle, up<FaceType::Tri6>(), reversed(quad8(-1.0, -1.0, 2.0, 4.0, g)), 1e-12),
                         6, g, 1.5);
   // A linear slave under a Tri6 master: D_j = int N_j of the Quad4 (1/4 each).
   const Q4 linearSlave{{{0.0, 0.0, 0.0}, {1.0, 0.0, 0.0}, {1.0, 1.0, 0.0}, {0.0, 1.0, 0.0}}};
   const auto onTri = integrateQuadraticSegment3D<FaceType::Quad4, FaceType::Tri6, double>(
       linearSlave, up<FaceType::Quad4>(), reversed(tri6({-1.0, -1.0}, {5.0, -1.0}, {-1.0, 5.0}, g)), 1e-12);
-  expectPatchIdentities(onTri, 4, g, 1.0);
+  test::expectPatchIdentities(onTri, 4, g, 1.0);
   for (int j = 0; j < 4; ++j) EXPECT_NEAR(onTri.D[j], 0.25, 1e-12) << j;
 }
 
-/// Central differences of every output against every input (h = 1e-6): the
-/// Sacado derivatives match to 1e-7.
-template <FaceType S, FaceType Mf>
-void checkDerivatives(const FaceNodes<S, double>& xs, const FaceNodes<S, double>& ns, const FaceNodes<Mf, double>& xm) {
-  constexpr int nS = FaceTraits<S>::nodes, nM = FaceTraits<Mf>::nodes, N = segment3DInputs<S, Mf>;
-  const auto lin = linearizeQuadraticSegment3D<S, Mf>(xs, ns, xm, 1e-10);
-  ASSERT_TRUE(lin.value.contributes);
-  const double h = 1e-6;
-  for (int i = 0; i < N; ++i) {
-    auto a = xs, b = ns;
-    auto c = xm;
-    auto input = [&]() -> double& {
-      if (i < 3 * nS) return a[i / 3][i % 3];
-      if (i < 6 * nS) return b[(i - 3 * nS) / 3][i % 3];
-      return c[(i - 6 * nS) / 3][i % 3];
-    };
-    input() += h;
-    const auto plus = integrateQuadraticSegment3D<S, Mf, double>(a, b, c, 1e-10);
-    input() -= 2 * h;
-    const auto minus = integrateQuadraticSegment3D<S, Mf, double>(a, b, c, 1e-10);
-    for (int j = 0; j < nS; ++j) {
-      EXPECT_NEAR((plus.D[j] - minus.D[j]) / (2 * h), lin.dD[j][i], 1e-7) << "D " << j << " input " << i;
-      EXPECT_NEAR((plus.gap[j] - minus.gap[j]) / (2 * h), lin.dGap[j][i], 1e-7) << "gap " << j << " input " << i;
-      for (int l = 0; l < nM; ++l)
-        EXPECT_NEAR((plus.M[j][l] - minus.M[j][l]) / (2 * h), lin.dM[j][l][i], 1e-7) << "M " << j << l << " input " << i;
-    }
-  }
-}
 
 /// Slightly tilted nodal normals.
 template <FaceType F>
@@ -200,13 +158,13 @@ FaceNodes<F, double> tilted() {
 }
 
 TEST(Mortar3DTransformedLinearization, CurvedQuad8AndTri6Faces) {
-  checkDerivatives<FaceType::Quad8, FaceType::Quad8>(quad8(0.0, 0.0, 2.0, 2.0, 0.0, 0.08, 0.1), tilted<FaceType::Quad8>(),
+  test::checkQuadraticSegmentDerivatives<FaceType::Quad8, FaceType::Quad8>(quad8(0.0, 0.0, 2.0, 2.0, 0.0, 0.08, 0.1), tilted<FaceType::Quad8>(),
                                                       reversed(quad8(0.6, -0.5, 2.2, 1.9, 0.15, -0.05)));
-  checkDerivatives<FaceType::Tri6, FaceType::Tri6>(tri6({0.0, 0.0}, {2.0, 0.1}, {0.2, 1.8}, 0.0, 0.06),
+  test::checkQuadraticSegmentDerivatives<FaceType::Tri6, FaceType::Tri6>(tri6({0.0, 0.0}, {2.0, 0.1}, {0.2, 1.8}, 0.0, 0.06),
                                                     tilted<FaceType::Tri6>(),
                                                     reversed(tri6({0.3, -0.4}, {2.5, 0.3}, {-0.2, 2.1}, 0.15, -0.04)));
   const T3 master{{{0.3, -0.4, 0.15}, {-0.2, 2.1, 0.12}, {2.5, 0.3, 0.2}}};
-  checkDerivatives<FaceType::Tri6, FaceType::Tri3>(tri6({0.0, 0.0}, {2.0, 0.1}, {0.2, 1.8}, 0.0, 0.06),
+  test::checkQuadraticSegmentDerivatives<FaceType::Tri6, FaceType::Tri3>(tri6({0.0, 0.0}, {2.0, 0.1}, {0.2, 1.8}, 0.0, 0.06),
                                                     tilted<FaceType::Tri6>(), master);
 }
 
