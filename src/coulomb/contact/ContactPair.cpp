@@ -1,6 +1,6 @@
 #include "coulomb/contact/ContactPair.hpp"
 #include "coulomb/contact/interface/SelfContactRoles.hpp"
-#include "coulomb/contact/interface/SlaveTransform.hpp"
+#include "coulomb/contact/SlaveTransform.hpp"
 
 #include <algorithm>
 #include <cmath>

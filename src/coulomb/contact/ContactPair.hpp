@@ -24,7 +24,7 @@
 #include "coulomb/contact/interface/ContactSearch.hpp"
 #include "coulomb/contact/ContactSettings.hpp"
 #include "coulomb/contact/interface/MortarPass.hpp"
-#include "coulomb/contact/interface/SlaveTransform.hpp"
+#include "coulomb/contact/SlaveTransform.hpp"
 #include "coulomb/contact/formulation/Formulation.hpp"
 #include "coulomb/core/TpetraTypes.hpp"
 #include "coulomb/fem/ModelSettings.hpp"

@@ -1,6 +1,6 @@
 /// @file SlaveTransform.cpp
 /// @brief Transformed slave rows of Quad8 / Tri6 faces (see the header).
-#include "coulomb/contact/interface/SlaveTransform.hpp"
+#include "coulomb/contact/SlaveTransform.hpp"
 
 #include <set>
 #include <unordered_set>
