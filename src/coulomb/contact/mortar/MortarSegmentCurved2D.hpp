@@ -13,7 +13,7 @@
 /// A = D_e M_e^-1: its D_e = int N_j dA is positive at every node (h/6, h/6,
 /// 2h/3 on a straight face), so D stays diagonal and positive and the
 /// condensation works as for Line2 (in 3D only the biquadratic Quad9 keeps
-/// that property; Quad8 and Tri6 need a transformed basis).
+/// that property; Quad8 and Tri6 take a transformed basis, DualBasis.hpp).
 ///
 /// Projections along the normal field, each solved by Newton in doubles and
 /// finished by one Newton step in the scalar type (the implicit function

@@ -1,19 +1,25 @@
 #pragma once
 /// @file MortarSegmentQuadratic3D.hpp
-/// @brief Mortar integration of a 3D face pair of which one is a quadratic
-/// Quad9 (issue 18, item 2): the quantities of MortarSegment3D.hpp (D_j,
-/// M_jl, g~_j and their derivatives), segmented on linear sub-facets.
+/// @brief Mortar integration of a 3D face pair of which one is quadratic
+/// (Quad9, Quad8 or Tri6; issue 18, item 2): the quantities of
+/// MortarSegment3D.hpp (D_j, M_jl, g~_j and their derivatives), segmented on
+/// linear sub-facets.
 ///
-/// Why Quad9 alone: its standard biquadratic dual basis (DualBasis.hpp) has
-/// D_j = int N_j dA > 0 at every node, so D stays diagonal and positive and
-/// the condensation works as for linear faces. Quad8 and Tri6 have a
-/// negative or zero D at the corners and need a transformed basis (not yet:
-/// ContactInterface refuses them).
+/// The dual basis: a Quad9's standard biquadratic one has D_j = int N_j dA
+/// > 0 at every node, so D stays diagonal and positive and the condensation
+/// works as for linear faces. Quad8 and Tri6 have a negative or zero int N_j
+/// at the corners; their dual basis is built on the transformed basis N~
+/// (DualBasis.hpp, faceTrialValues), so D_j = int N~_j > 0, and the pair's
+/// rows are carried between the transformed and the physical slave nodes by
+/// SlaveTransform.hpp. Pairs of a Quad9 with a Quad8 or Tri6 are not
+/// instantiated (ContactInterface's surfaces take one kind).
 ///
 /// Segmentation (Puso and Laursen's sub-facets, as in the dual quadratic
 /// mortar of Popp, Wohlmuth, Gee and Wall): a Quad9 is split into its four
-/// Quad4 quadrants (nodes 0 4 8 7, 4 1 5 8, 8 5 2 6, 7 8 6 3), a Tri3 or
-/// Quad4 is one sub-facet. Each (slave sub-facet, master sub-facet) pair is
+/// Quad4 quadrants (nodes 0 4 8 7, 4 1 5 8, 8 5 2 6, 7 8 6 3), a Tri6 into
+/// its four triangles (0 3 5, 3 1 4, 5 4 2, 3 4 5), a Quad8 (no centre node)
+/// into a triangle at each corner (0 4 7, 1 5 4, 2 6 5, 3 7 6) and the
+/// quadrilateral of its mid-sides (4 5 6 7); a Tri3 or Quad4 is one sub-facet. Each (slave sub-facet, master sub-facet) pair is
 /// clipped on the auxiliary plane of the slave sub-facet exactly as in
 /// MortarSegment3D.hpp (projection along its normal, Sutherland-Hodgman,
 /// the fan of triangles from the centroid, the 7-point rule). A Gauss point
@@ -22,13 +28,14 @@
 /// evaluated: the dual functions Phi_j, the master's N^2_l, the points
 /// x^1, x^2 of the quadratic faces, the interpolated normal n; the measure is
 /// the sub-facet's. Exact for plane parallel faces in the patch-test sense
-/// (sum_l M_jl = D_j, g~_j = g D_j, D_j = int N_j under a covering master);
+/// (sum_l M_jl = D_j, g~_j = g D_j, D_j = int N~_j under a covering master);
 /// an approximation on curved faces (the sub-facets are their chords).
 #include "coulomb/contact/mortar/MortarSegment3D.hpp"
 
 namespace coulomb::contact {
 
-/// @brief Integrates one pair (S or Mf a Quad9, the other Tri3, Quad4 or Quad9).
+/// @brief Integrates one pair (S or Mf a Quad9 and the other Tri3, Quad4 or
+/// Quad9; or S or Mf a Quad8 / Tri6 and the other Tri3, Quad4, Quad8 or Tri6).
 template <mesh::FaceType S, mesh::FaceType Mf, typename T>
 MortarSegment3D<S, Mf, T> integrateQuadraticSegment3D(const FaceNodes<S, T>& xs, const FaceNodes<S, T>& ns,
                                                       const FaceNodes<Mf, T>& xm, double relativeTolerance);
