@@ -187,7 +187,7 @@ void pair2D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
 /// A 3D pair: the linear kernel, or the sub-facet one when a face is
 /// quadratic (MortarSegmentQuadratic3D.hpp). The sub-facet kernel has
 /// Quad9 with Tri3, Quad4, Quad9, and Quad8 / Tri6 with Tri3, Quad4, Quad8,
-/// Tri6 (ContactInterface refuses a pair mixing Quad9 with Quad8 or Tri6).
+/// Tri6 (ContactPair refuses a pair mixing Quad9 with Quad8 or Tri6).
 template <FaceType S, FaceType Mf>
 void pair3D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
   constexpr bool quad9 = S == FaceType::Quad9 || Mf == FaceType::Quad9;
