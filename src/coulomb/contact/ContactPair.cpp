@@ -436,15 +436,7 @@ PairIterationSummary ContactPair::updateNodes(const Vector* bulkResidual, const 
   // the rest of a large slave surface costs a plain double pass.
   differentiate(flags);
   RowSink sink(out, *interface_, prescribed_, multiplierBlockOffset_);
-  ContactContributions before;  // the sizes of out's lists before this pair's rows
-  if (slaveTransform_->active()) {
-    before.transform.resize(out.transform.size());
-    before.tangentTransform.resize(out.tangentTransform.size());
-    before.contactResidual.resize(out.contactResidual.size());
-    before.contactStiffness.resize(out.contactStiffness.size());
-    before.prescribedForce.resize(out.prescribedForce.size());
-    before.multipliers.columns.resize(out.multipliers.columns.size());
-  }
+  const SlaveTransform::Marks before(out);  // where this pair's entries begin
   std::array<DerivativeRow, 3> dw;
   for (std::size_t i = 0; i < owned; ++i) {
     SlaveNode n = slaveNode(i, flags[i] != 0);

@@ -58,9 +58,9 @@ bool SlaveTransform::prescribedSlave(int slave, int c) const {
   return prescribed_[contact_.interfaceNodeIndex(contact_.slaveNodes()[slave])][c];
 }
 
-void SlaveTransform::toSystemRowsImpl(ContactContributions& out, const ContactContributions& from, bool condensed,
-                                      const std::vector<int>& owned,
-                                      const std::function<double(long long, int)>& residual) const {
+void SlaveTransform::toSystemRows(ContactContributions& out, const Marks& from, bool condensed,
+                                  const std::vector<int>& owned,
+                                  const std::function<double(long long, int)>& residual) const {
   if (!active_) return;
   const auto& nodes = contact_.slaveNodes();
   // The transformed slave node of a DoF, or -1.
@@ -73,8 +73,8 @@ void SlaveTransform::toSystemRowsImpl(ContactContributions& out, const ContactCo
   // K rows combined by a derivative with respect to r~_j: rowTerms.
   {
     auto& list = out.tangentTransform;
-    std::vector<linalg::MatrixTriplet> kept(list.begin(), list.begin() + from.tangentTransform.size());
-    for (std::size_t i = from.tangentTransform.size(); i < list.size(); ++i) {
+    std::vector<linalg::MatrixTriplet> kept(list.begin(), list.begin() + from.tangentTransform);
+    for (std::size_t i = from.tangentTransform; i < list.size(); ++i) {
       const auto& t = list[i];
       const int j = slaveOf(t.column);
       if (j < 0) {
@@ -113,19 +113,19 @@ void SlaveTransform::toSystemRowsImpl(ContactContributions& out, const ContactCo
     list.swap(kept);
   };
   std::vector<linalg::VectorEntry> toSupport;
-  forces(out.contactResidual, from.contactResidual.size(), [&](linalg::VectorEntry e) {
+  forces(out.contactResidual, from.contactResidual, [&](linalg::VectorEntry e) {
     e.value = -e.value;  // -f_c in the residual, +f_c on the support
     toSupport.push_back(e);
   });
-  forces(out.contactStiffness, from.contactStiffness.size(), [](const linalg::MatrixTriplet&) {});
-  forces(out.multipliers.columns, from.multipliers.columns.size(), [](const linalg::MatrixTriplet&) {});
-  forces(out.prescribedForce, from.prescribedForce.size(), [&](const linalg::VectorEntry& e) { toSupport.push_back(e); });
+  forces(out.contactStiffness, from.contactStiffness, [](const linalg::MatrixTriplet&) {});
+  forces(out.multipliers.columns, from.multiplierColumns, [](const linalg::MatrixTriplet&) {});
+  forces(out.prescribedForce, from.prescribedForce, [&](const linalg::VectorEntry& e) { toSupport.push_back(e); });
   out.prescribedForce.insert(out.prescribedForce.end(), toSupport.begin(), toSupport.end());
 
   if (!condensed) return;
   // Rows the pair did not replace become r~ (T - I += rowTerms - identity).
   std::unordered_set<GlobalOrdinal> replaced;
-  for (std::size_t i = from.transform.size(); i < out.transform.size(); ++i)
+  for (std::size_t i = from.transform; i < out.transform.size(); ++i)
     if (out.transform[i].row == out.transform[i].column) replaced.insert(out.transform[i].row);
   for (int j : owned) {
     if (!transformed_[j]) continue;

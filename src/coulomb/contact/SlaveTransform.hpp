@@ -55,8 +55,19 @@ public:
   /// A force on transformed node j acts on the physical nodes as these terms (T^-T).
   const std::vector<Term>& forceTerms(int slave) const { return forceTerms_[slave]; }
 
-  /// Converts what a pair appended to `out` since `from` (its sizes before
-  /// the pair's update) from transformed slave rows to the system's:
+  /// How long each list of a ContactContributions is: where a pair's own
+  /// entries begin.
+  struct Marks {
+    std::size_t transform = 0, tangentTransform = 0, contactResidual = 0, contactStiffness = 0,
+                prescribedForce = 0, multiplierColumns = 0;
+    explicit Marks(const ContactContributions& c)
+        : transform(c.transform.size()), tangentTransform(c.tangentTransform.size()),
+          contactResidual(c.contactResidual.size()), contactStiffness(c.contactStiffness.size()),
+          prescribedForce(c.prescribedForce.size()), multiplierColumns(c.multipliers.columns.size()) {}
+  };
+
+  /// Converts what a pair appended to `out` since `from` (Marks of out
+  /// before the pair's update) from transformed slave rows to the system's:
   ///  - tangentTransform columns at transformed slave nodes combine the K
   ///    rows of rowTerms;
   ///  - `condensed` (ALM, MPC): the free rows of the owned slave nodes
@@ -68,15 +79,10 @@ public:
   ///    multiplier columns at slave rows act as forceTerms; what lands on a
   ///    prescribed row goes to prescribedForce (residual) or is dropped
   ///    (stiffness: those rows are u - u_bar).
-  template <class Residual>
-  void toSystemRows(ContactContributions& out, const ContactContributions& from, bool condensed,
-                    const std::vector<int>& owned, Residual&& residual) const {
-    toSystemRowsImpl(out, from, condensed, owned, [&](long long node, int c) { return residual(node, c); });
-  }
+  void toSystemRows(ContactContributions& out, const Marks& from, bool condensed, const std::vector<int>& owned,
+                    const std::function<double(long long, int)>& residual) const;
 
 private:
-  void toSystemRowsImpl(ContactContributions& out, const ContactContributions& from, bool condensed,
-                        const std::vector<int>& owned, const std::function<double(long long, int)>& residual) const;
   bool prescribedSlave(int slave, int c) const;
 
   const ContactInterface& contact_;

@@ -128,10 +128,9 @@ FaceNodes<F, T> faceCornerNormals(const FaceNodes<F, T>& x) {
     // orientation: at a corner it is along (x_next - x_a) × (x_prev - x_a);
     // Tri3's at a Tri6 corner).
     constexpr int n = FaceTraits<F>::nodes;
-    constexpr double kTri6Node[6][2] = {{0, 0}, {1, 0}, {0, 1}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}};
     for (int a = 0; a < n; ++a) {
-      const FacePoint<F, double> at = F == FaceType::Tri6 ? FacePoint<F, double>{kTri6Node[a][0], kTri6Node[a][1]}
-                                                          : FacePoint<F, double>{double(kQuad9Node[a][0]), double(kQuad9Node[a][1])};
+      const auto node = quadraticFaceNode<F>(a);
+      const FacePoint<F, double> at{node[0], node[1]};
       const auto g = faceShapeGradients<F, double>(at);
       std::array<T, 3> tx{T(0.0), T(0.0), T(0.0)}, ty{T(0.0), T(0.0), T(0.0)};
       for (int b = 0; b < n; ++b)

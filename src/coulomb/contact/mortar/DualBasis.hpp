@@ -75,6 +75,15 @@ using NodalMatrix = std::array<std::array<T, FaceTraits<F>::nodes>, FaceTraits<F
 /// Reference coordinates of the Quad9 nodes (Exodus: corners, mid-sides from
 /// the edge 0-1 on, centre).
 inline constexpr int kQuad9Node[9][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}, {0, -1}, {1, 0}, {0, 1}, {-1, 0}, {0, 0}};
+/// Reference coordinates of the Tri6 nodes (corners, mid-sides of 0-1, 1-2, 2-0).
+inline constexpr double kTri6Node[6][2] = {{0, 0}, {1, 0}, {0, 1}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}};
+/// Reference coordinates of node a of a quadratic face (Tri6, Quad8 or Quad9;
+/// Quad8 has the first eight Quad9 nodes).
+template <mesh::FaceType F>
+constexpr std::array<double, 2> quadraticFaceNode(int a) {
+  if constexpr (F == mesh::FaceType::Tri6) return {kTri6Node[a][0], kTri6Node[a][1]};
+  else return {double(kQuad9Node[a][0]), double(kQuad9Node[a][1])};
+}
 /// The 1D quadratic Lagrange function of the node at c in {-1, 0, 1}, and its derivative.
 template <typename X>
 inline X lagrange3(int c, const X& s) {

@@ -26,6 +26,21 @@ struct SubFacet {
   std::array<std::array<double, 2>, 4> corner{};
 };
 
+/// The linear piece of quadratic face F on its nodes `nodes` (3: a
+/// triangle, 4: a quadrilateral).
+template <FaceType F, std::size_t N>
+SubFacet pieceOf(const std::array<int, N>& nodes) {
+  SubFacet f;
+  f.type = N == 3 ? FaceType::Tri3 : FaceType::Quad4;
+  f.count = static_cast<int>(N);
+  f.node = {-1, -1, -1, -1};
+  for (std::size_t c = 0; c < N; ++c) {
+    f.node[c] = nodes[c];
+    f.corner[c] = quadraticFaceNode<F>(nodes[c]);
+  }
+  return f;
+}
+
 template <FaceType F>
 std::vector<SubFacet> subFacets() {
   if constexpr (F == FaceType::Tri3) {
@@ -34,43 +49,23 @@ std::vector<SubFacet> subFacets() {
     return {SubFacet{FaceType::Quad4, 4, {0, 1, 2, 3}, {{{-1, -1}, {1, -1}, {1, 1}, {-1, 1}}}}};
   } else if constexpr (F == FaceType::Tri6) {
     // The four triangles between the corners and the mid-sides.
-    constexpr double kTri6Node[6][2] = {{0, 0}, {1, 0}, {0, 1}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}};
     std::vector<SubFacet> out;
-    for (const std::array<int, 3> t : {std::array<int, 3>{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}}) {
-      SubFacet f;
-      f.type = FaceType::Tri3;
-      f.count = 3;
-      f.node = {t[0], t[1], t[2], -1};
-      for (int c = 0; c < 3; ++c) f.corner[c] = {kTri6Node[t[c]][0], kTri6Node[t[c]][1]};
-      out.push_back(f);
-    }
+    for (const std::array<int, 3> t : {std::array<int, 3>{0, 3, 5}, {3, 1, 4}, {5, 4, 2}, {3, 4, 5}})
+      out.push_back(pieceOf<F>(t));
     return out;
   } else if constexpr (F == FaceType::Quad8) {
     // No centre node: a triangle at each corner (corner, its two
     // mid-sides) and the quadrilateral of the four mid-sides.
     std::vector<SubFacet> out;
-    for (const std::array<int, 3> t : {std::array<int, 3>{0, 4, 7}, {1, 5, 4}, {2, 6, 5}, {3, 7, 6}}) {
-      SubFacet f;
-      f.type = FaceType::Tri3;
-      f.count = 3;
-      f.node = {t[0], t[1], t[2], -1};
-      for (int c = 0; c < 3; ++c) f.corner[c] = {double(kQuad9Node[t[c]][0]), double(kQuad9Node[t[c]][1])};
-      out.push_back(f);
-    }
-    SubFacet middle;
-    middle.node = {4, 5, 6, 7};
-    for (int c = 0; c < 4; ++c) middle.corner[c] = {double(kQuad9Node[4 + c][0]), double(kQuad9Node[4 + c][1])};
-    out.push_back(middle);
+    for (const std::array<int, 3> t : {std::array<int, 3>{0, 4, 7}, {1, 5, 4}, {2, 6, 5}, {3, 7, 6}})
+      out.push_back(pieceOf<F>(t));
+    out.push_back(pieceOf<F>(std::array<int, 4>{4, 5, 6, 7}));
     return out;
   } else {
     static_assert(F == FaceType::Quad9, "sub-facets of Tri3, Quad4, Tri6, Quad8 and Quad9 faces");
     std::vector<SubFacet> out;
-    for (const std::array<int, 4> q : {std::array<int, 4>{0, 4, 8, 7}, {4, 1, 5, 8}, {8, 5, 2, 6}, {7, 8, 6, 3}}) {
-      SubFacet f;
-      f.node = q;
-      for (int c = 0; c < 4; ++c) f.corner[c] = {double(kQuad9Node[q[c]][0]), double(kQuad9Node[q[c]][1])};
-      out.push_back(f);
-    }
+    for (const std::array<int, 4> q : {std::array<int, 4>{0, 4, 8, 7}, {4, 1, 5, 8}, {8, 5, 2, 6}, {7, 8, 6, 3}})
+      out.push_back(pieceOf<F>(q));
     return out;
   }
 }
