@@ -1,4 +1,5 @@
 #include "coulomb/contact/ContactPair.hpp"
+#include "coulomb/contact/interface/InterfaceBalance.hpp"
 #include "coulomb/contact/interface/SelfContactRoles.hpp"
 #include "coulomb/contact/SlaveTransform.hpp"
 
@@ -88,6 +89,7 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
   interface_ = std::make_unique<ContactInterface>(mesh, settings.slave, settings.master, what,
                                                   model.axisymmetric(mesh.dimension()));
   gather_ = std::make_unique<InterfaceGather>(*interface_, ownedDofMap);
+  integratedFaces_ = interface_->ownedSlaveFaces();
   const PenaltyInput penalty = penaltyInput(mesh, *interface_, model, what);
   const double h = meanFaceDiameter(penalty.slaveFaces);
   constants_.settings = &settings_;
@@ -222,7 +224,23 @@ void ContactPair::search() {
   SelfContactRoles selfRoles;
   try {
     radius_ = std::max(defaultSearchRadius(*interface_, x_, settings_.searchRadiusFactor), widenedRadius_);
-    search_ = searchContactPairs(*interface_, x_, radius_);
+    search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_);
+  } catch (const Error& e) {
+    failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();
+  }
+  throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
+  if (settings_.distribution == InterfaceDistribution::Balanced && interface_->comm()->getSize() > 1) {
+    // The faces go where their candidates balance the work; search them
+    // there (cheaper than sending the candidate lists along).
+    integratedFaces_ = balancedSlaveFaces(*interface_, integratedFaces_, search_);
+    try {
+      search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_);
+    } catch (const Error& e) {
+      failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();
+    }
+    throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
+  }
+  try {
     // Roles from the step start and now (SelfContactRoles.hpp); the
     // constructor's first search, before any step, is at the reference
     // configuration.
@@ -258,7 +276,7 @@ void ContactPair::search() {
   notes_.push_back(note.str());
   widenedRadius_ = std::max(widenedRadius_, 2.0 * depth);
   radius_ = widenedRadius_;
-  search_ = searchContactPairs(*interface_, x_, radius_);
+  search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_);
 }
 
 std::vector<std::string> ContactPair::takeNotes() {
@@ -282,7 +300,7 @@ void ContactPair::integrateCurrentConfiguration() {
     searched_ = true;
   }
   try {
-    std::vector<int> needed = interface_->slaveNodesOfOwnedFaces();
+    std::vector<int> needed = slaveNodesOfFaces(*interface_, integratedFaces_);
     needed.insert(needed.end(), interface_->ownedSlaveNodes().begin(), interface_->ownedSlaveNodes().end());
     std::sort(needed.begin(), needed.end());
     needed.erase(std::unique(needed.begin(), needed.end()), needed.end());

@@ -158,6 +158,9 @@ private:
   double deepest_ = 0.0;         ///< this pass: deepest penetration beyond the radius (this rank)
   double widenedRadius_ = 0.0;   ///< the search radius never goes below this (widenSearchRadius)
   long long droppedSelfLinks_ = 0;  ///< self contact: links without roles at the last search (a note when it changes)
+  /// The slave faces this rank integrates (indices into slaveFaces()): those
+  /// of its elements, or after balancing (Interface Distribution).
+  std::vector<int> integratedFaces_;
   SearchResult search_;
   std::vector<std::string> notes_;    ///< console notes not yet taken (takeNotes)
   InterfaceConfiguration x_;          ///< current interface coordinates (last update)

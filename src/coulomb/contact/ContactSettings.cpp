@@ -31,6 +31,8 @@ const io::Choices<FrictionLawType> kFrictionLaws{
     {"None", FrictionLawType::None}, {"Coulomb", FrictionLawType::Coulomb}, {"Tresca", FrictionLawType::Tresca}};
 const io::Choices<SlipMeasure> kSlipMeasures{{"Objective", SlipMeasure::Objective},
                                              {"Non-Objective", SlipMeasure::NonObjective}};
+const io::Choices<InterfaceDistribution> kDistributions{{"Element Owners", InterfaceDistribution::ElementOwners},
+                                                         {"Balanced", InterfaceDistribution::Balanced}};
 const io::Choices<ConvergenceCriterion> kCriteria{{"Residual", ConvergenceCriterion::Residual},
                                                   {"Increment", ConvergenceCriterion::Increment},
                                                   {"Mixed", ConvergenceCriterion::Mixed}};
@@ -112,6 +114,10 @@ void addValidContactParameters(ParameterList& valid) {
   pair.set("Search Radius Factor", d.searchRadiusFactor,
            "search radius = this x the largest slave face diameter: should exceed the gap closed in one step; an active node found deeper than the radius widens it to twice its depth for the rest of the run (the step is retried)",
            io::positive());
+  pair.set("Interface Distribution", std::string(kDistributions.name(d.distribution)),
+           "which rank integrates a slave face: Element Owners, the rank of its element; Balanced, the faces "
+           "redistributed over all ranks by their candidate master faces at every search",
+           kDistributions.validator());
   pair.set("Friction Law", std::string(kFrictionLaws.name(d.friction.type)),
            "None: frictionless; Coulomb: |t_tau| <= mu p; Tresca: |t_tau| <= Tresca Threshold",
            kFrictionLaws.validator());
@@ -197,6 +203,7 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
     s.semiSmooth = kSemiSmooth.value(io::valueOrDefault<std::string>(p, v, "Semi-Smooth Newton"));
     s.searchEveryIteration = io::valueOrDefault<bool>(p, v, "Search Every Iteration");
     s.searchRadiusFactor = io::valueOrDefault<double>(p, v, "Search Radius Factor");
+    s.distribution = kDistributions.value(io::valueOrDefault<std::string>(p, v, "Interface Distribution"));
     s.friction.type = kFrictionLaws.value(io::valueOrDefault<std::string>(p, v, "Friction Law"));
     s.friction.coefficient = io::valueOrDefault<double>(p, v, "Friction Coefficient");
     s.friction.threshold = io::valueOrDefault<double>(p, v, "Tresca Threshold");

@@ -45,6 +45,11 @@ enum class SlipMeasure { Objective, NonObjective };
 /// pairs, and a check of the condensation with ALM frictionless pairs.
 enum class ContactSystemForm { Condensed, SaddlePoint };
 
+/// Which rank integrates a slave face (the mortar pass): ElementOwners, the
+/// rank of its element; Balanced, the faces redistributed over all ranks by
+/// their candidates at every search (contact/interface/InterfaceBalance.hpp).
+enum class InterfaceDistribution { ElementOwners, Balanced };
+
 /// @brief One contact pair.
 struct ContactPairSettings {
   std::string name;    ///< the deck sublist name (messages, output variable names)
@@ -62,6 +67,7 @@ struct ContactPairSettings {
   SemiSmoothNewton semiSmooth = SemiSmoothNewton::Full;
   bool searchEveryIteration = false;  ///< else once per load step
   double searchRadiusFactor = 1.0;    ///< radius = factor × largest slave face diameter
+  InterfaceDistribution distribution = InterfaceDistribution::Balanced;
   // Friction (ALM only; FrictionalNode.hpp).
   FrictionLaw friction;               ///< law and its parameters (None: frictionless)
   double tangentFactor = 1.0;         ///< kappa: eps_tau = kappa eps_n

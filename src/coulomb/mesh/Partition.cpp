@@ -70,4 +70,35 @@ std::vector<int> partitionElements(const GlobalMesh& mesh, const Teuchos::RCP<co
   return owner;
 }
 
+std::vector<int> partitionWeightedPoints(int dimension, const std::vector<double>& points,
+                                         const std::vector<double>& weights,
+                                         const Teuchos::RCP<const Teuchos::Comm<int>>& comm) {
+  const int count = static_cast<int>(weights.size());
+  COULOMB_CHECK(points.size() == 3 * weights.size(), "three coordinates per weighted point");
+  if (comm->getSize() == 1) return std::vector<int>(weights.size(), 0);
+  // Global ids only have to be unique: the rank's offset plus the position.
+  int offset = 0;
+  MPI_Exscan(&count, &offset, 1, MPI_INT, MPI_SUM, rawComm(*comm));
+  if (comm->getRank() == 0) offset = 0;
+  std::vector<long long> ids(weights.size());
+  for (int i = 0; i < count; ++i) ids[i] = static_cast<long long>(offset) + i;
+
+  using Types = Zoltan2::BasicUserTypes<double, int, long long>;
+  using Adapter = Zoltan2::BasicVectorAdapter<Types>;
+  // A rank without points still hands Zoltan2 valid pointers (a null y or z
+  // would mean another dimension than the other ranks').
+  static const double none[3] = {0.0, 0.0, 0.0};
+  const double* p = count > 0 ? points.data() : none;
+  const double* w = count > 0 ? weights.data() : none;
+  Adapter adapter(count, ids.data(), p, p + 1, dimension == 3 ? p + 2 : nullptr, 3, 3, 3, true, w, 1);
+  Teuchos::ParameterList params;
+  params.set("algorithm", "multijagged");
+  params.set("num_global_parts", comm->getSize());
+  params.set("imbalance_tolerance", 1.05);
+  Zoltan2::PartitioningProblem<Adapter> problem(&adapter, &params, comm);
+  problem.solve();
+  const auto* parts = problem.getSolution().getPartListView();
+  return std::vector<int>(parts, parts + count);
+}
+
 }  // namespace coulomb::mesh

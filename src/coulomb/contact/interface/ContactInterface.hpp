@@ -5,9 +5,9 @@
 ///
 /// Every rank holds the whole GlobalMesh (docs/architecture.md, "Mesh
 /// distribution"), so every rank builds the same complete lists of slave and
-/// master faces without communication; ownership only says which rank
-/// integrates what:
-///  - a face (slave or master) belongs to the owner of its element,
+/// master faces without communication; ownership says which rank does what:
+///  - a face (slave or master) belongs to the owner of its element (a pair
+///    may integrate its slave faces elsewhere: InterfaceBalance.hpp),
 ///  - a slave node belongs to Mesh::nodeOwner (the owner of its DoFs).
 /// A rank may own a slave node none of whose slave faces it owns (the node's
 /// lowest-ranked element need not carry a slave face); every rank can still
