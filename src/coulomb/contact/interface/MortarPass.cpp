@@ -24,6 +24,7 @@
 #include "coulomb/contact/mortar/MortarSegmentCurved2D.hpp"
 #include "coulomb/contact/mortar/MortarSegment3D.hpp"
 #include "coulomb/contact/mortar/MortarSegmentQuadratic3D.hpp"
+#include "coulomb/contact/mortar/OverlapBound.hpp"
 #include "coulomb/core/Error.hpp"
 #include "coulomb/core/Parallel.hpp"
 
@@ -151,6 +152,7 @@ void integrateWith(const PairContext& p, const ContactFace& s, const ContactFace
   const auto xs = faceCoordinates<S>(s, p.x);
   const auto ns = faceNormals<S>(s, p.contact, p.normals);
   const auto xm = faceCoordinates<Mf>(m, p.x);
+  if (!projectionsMayOverlap<S, Mf>(xs, xm)) return;  // most candidates: no clipping (OverlapBound.hpp)
   using Lin = decltype(linearize(xs, ns, xm));
   if (p.withDerivatives && integrate(xs, ns, xm).contributes) {
     const Lin lin = linearize(xs, ns, xm);
