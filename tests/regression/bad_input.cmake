@@ -109,6 +109,9 @@ coulomb_bad_input(contact_self_surface_inside_body
 coulomb_bad_input(contact_self_quad8_faces
                   "Contact/Pairs/punch: self-contact on QUAD8 or TRI6 faces is not supported"
                   NP 1 2)
+coulomb_bad_input(contact_quad9_on_quad8
+                  "Contact/Pairs/joint: QUAD9 faces on one side and QUAD8 or TRI6 faces on the other cannot be paired"
+                  CHECK NP 1 2 CDL hex27_under_hex20.cdl)
 coulomb_bad_input(axisymmetric_thickness
                   "'Element Blocks/body/Thickness' has no meaning with 'Problem/Plane Assumption' = 'Axisymmetric'" NP 1 2)
 coulomb_bad_input(axisymmetric_negative_radius
