@@ -4,6 +4,7 @@
 
 #include "coulomb/contact/mortar/MortarScalarTypes.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -203,7 +204,37 @@ MortarSegment3D<S, Mf, T> integrateQuadraticSegment3D(const FaceNodes<S, T>& xs,
                       "mortar integration: a slave face is not convex on its auxiliary plane (distorted element)");
     }
     const double tolerance = relativeTolerance * std::sqrt(slaveArea);
+    // The slave polygon's box on the plane, in doubles: a master sub-facet
+    // whose box misses it is skipped before its projection and clipping in
+    // T, which with Sacado (tens of derivatives) is most of the kernel's cost
+    // and would find no overlap anyway.
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (int c = 0; c < fs.count; ++c)
+      for (int i = 0; i < 2; ++i) {
+        lo[i] = std::min(lo[i], valueOf(slave.p[c][i]));
+        hi[i] = std::max(hi[i], valueOf(slave.p[c][i]));
+      }
+    const double margin = 10.0 * tolerance;
+    auto besideSlave = [&](const SubFacet& facet) {
+      double mLo[2] = {1e300, 1e300}, mHi[2] = {-1e300, -1e300};
+      for (int c = 0; c < facet.count; ++c) {
+        double r[3], s[2] = {0.0, 0.0};
+        for (int i = 0; i < 3; ++i) r[i] = valueOf(xm[facet.node[c]][i]) - valueOf(x0[i]);
+        for (int i = 0; i < 3; ++i) {
+          s[0] += r[i] * valueOf(e1[i]);
+          s[1] += r[i] * valueOf(e2[i]);
+        }
+        for (int i = 0; i < 2; ++i) {
+          mLo[i] = std::min(mLo[i], s[i]);
+          mHi[i] = std::max(mHi[i], s[i]);
+        }
+      }
+      for (int i = 0; i < 2; ++i)
+        if (mLo[i] > hi[i] + margin || lo[i] > mHi[i] + margin) return true;
+      return false;
+    };
     for (const SubFacet& facet : masterFacets) {
+      if (besideSlave(facet)) continue;
       std::array<Point2<T>, 4> corners{};
       Polygon2<T> outline;
       for (int c = 0; c < facet.count; ++c) {
