@@ -367,7 +367,14 @@ FrictionalNodeRows<dim> frictionalRows(const FrictionalNodeInput<dim>& in, Conta
     const int s = f.free[i];
     if (s == f.gapSlot) continue;
     if (state == ContactState::Stick) {
-      rows[s] = p.epsN * t * terms.slip[s];
+      // -eps_n t (b_s.w): w is the master relative to the slave, so the row
+      // of +(b_s.w) has about -eps_n t D on its own diagonal; negated, every
+      // condensed row has a positive diagonal, which Ifpack2's l1
+      // Gauss-Seidel needs: it adds the off-rank magnitudes to a diagonal it
+      // finds small, and a negative one then nears zero (the frictional tube
+      // at np 3 stalled GMRES at 1000 iterations in the first contact
+      // iterate).
+      rows[s] = -p.epsN * t * terms.slip[s];
     } else {
       // b_s.r_F = k t D beta_s: the recovered tangential force minus the cone's.
       rows[s] = p.k * t * D * terms.beta[s] - t * D * threshold * direction[s];

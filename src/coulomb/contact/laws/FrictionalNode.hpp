@@ -11,7 +11,8 @@
 ///   lambda   = lambda_n n + sum_s beta_s b_s   (no beta without a law),
 /// and the node's free rows replaced by
 ///   gap slot        : sign eps_n t g~
-///   tangent slot s  : stick  eps_n t (b_s . w)       (no slip, 4.72b st)
+///   tangent slot s  : stick  -eps_n t (b_s . w)      (no slip, 4.72b st; the
+///                                                     sign: a positive diagonal)
 ///                     slip   b_s.r_F - t D Θ d_s     (traction on the cone, 4.72b sl)
 /// with w the weighted slip (seed sign of 4.69b: the master relative to the
 /// slave), Θ the law's threshold at lambdā_n = k lambda_n + eps_n g~ / D,
