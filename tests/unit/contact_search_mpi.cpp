@@ -16,6 +16,7 @@
 #include "TwoBodies.hpp"
 #include "coulomb/contact/interface/ContactInterface.hpp"
 #include "coulomb/contact/interface/ContactSearch.hpp"
+#include "coulomb/contact/interface/InterfaceBalance.hpp"
 #include "coulomb/contact/interface/NodalNormals.hpp"
 #include "coulomb/core/Error.hpp"
 #include "coulomb/fem/DofMap.hpp"
@@ -308,8 +309,9 @@ TEST_P(ContactSearchTwoBodies, NormalsRotateWithTheSlaveBody) {
   const InterfaceConfiguration x = gather.gather(*u);
   // (0, -1) rotated: (si, -co) in the (x, vertical) plane.
   double worst = 0.0;
-  const auto normals = contact::computeNodalNormals(c, x, true, &c.slaveNodesOfOwnedFaces());
-  for (int i : c.slaveNodesOfOwnedFaces()) {
+  const std::vector<int> nodes = contact::slaveNodesOfFaces(c, c.ownedSlaveFaces());
+  const auto normals = contact::computeNodalNormals(c, x, true, &nodes);
+  for (int i : nodes) {
     worst = std::max(worst, std::abs(normals[i].n[0] - si));
     worst = std::max(worst, std::abs(normals[i].n[v] + co));
     if (dim == 3) worst = std::max(worst, std::abs(normals[i].n[1]));

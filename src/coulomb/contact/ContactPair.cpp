@@ -220,36 +220,34 @@ void ContactPair::search() {
   // Its own counter: the number of calls shows Search Every Iteration at work.
   static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact search");
   Teuchos::TimeMonitor scope(*timer);
-  std::string failure;
-  SelfContactRoles selfRoles;
-  try {
-    radius_ = std::max(defaultSearchRadius(*interface_, x_, settings_.searchRadiusFactor), widenedRadius_);
-    search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_);
-  } catch (const Error& e) {
-    failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();
-  }
-  throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
-  if (settings_.distribution == InterfaceDistribution::Balanced && interface_->comm()->getSize() > 1) {
-    // The faces go where their candidates balance the work; search them
-    // there (cheaper than sending the candidate lists along).
-    integratedFaces_ = balancedSlaveFaces(*interface_, integratedFaces_, search_);
+  // Each stage on every rank, then one agreed error if any rank failed.
+  auto collectively = [&](const auto& stage) {
+    std::string failure;
     try {
-      search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_);
+      stage();
     } catch (const Error& e) {
       failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();
     }
     throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
+  };
+  collectively([&] {
+    radius_ = std::max(defaultSearchRadius(*interface_, x_, settings_.searchRadiusFactor), widenedRadius_);
+    search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_);
+  });
+  if (settings_.distribution == InterfaceDistribution::Balanced && interface_->comm()->getSize() > 1) {
+    // The faces go where their candidates balance the work; search them
+    // there (cheaper than sending the candidate lists along).
+    integratedFaces_ = balancedSlaveFaces(*interface_, integratedFaces_, search_);
+    collectively([&] { search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_); });
   }
-  try {
-    // Roles from the step start and now (SelfContactRoles.hpp); the
-    // constructor's first search, before any step, is at the reference
-    // configuration.
-    if (interface_->selfContact())
+  SelfContactRoles selfRoles;
+  // Roles from the step start and now (SelfContactRoles.hpp); the
+  // constructor's first search, before any step, is at the reference
+  // configuration.
+  if (interface_->selfContact())
+    collectively([&] {
       selfRoles = restrictToSelfContactRoles(*interface_, stepStartX_.x.empty() ? x_ : stepStartX_, x_, search_);
-  } catch (const Error& e) {
-    failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();
-  }
-  throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
+    });
   if (interface_->selfContact()) {
     // Every rank decided the same roles (SelfContactRoles.hpp).
     if (selfRoles.droppedLinks > 0 && selfRoles.droppedLinks != droppedSelfLinks_) {

@@ -33,13 +33,11 @@ std::vector<int> partitionElements(const GlobalMesh& mesh, const Teuchos::RCP<co
   const long long end = numElements * (rank + 1) / size;
   const int count = static_cast<int>(end - begin);
   const int dim = mesh.dimension;
-  std::vector<long long> ids(count);
   std::vector<double> centroid(3 * static_cast<std::size_t>(count), 0.0);
   for (const auto& block : mesh.blocks) {
     const int nodesPerCell = numNodes(block.cellType);
     for (long long e = std::max(begin, block.firstElement); e < std::min(end, block.firstElement + block.numElements()); ++e) {
       const long long i = e - begin;
-      ids[i] = e;
       for (int a = 0; a < nodesPerCell; ++a) {
         const long long node = block.connectivity[(e - block.firstElement) * nodesPerCell + a];
         for (int d = 0; d < dim; ++d) centroid[3 * i + d] += mesh.coordinates[node * dim + d] / nodesPerCell;
@@ -47,18 +45,9 @@ std::vector<int> partitionElements(const GlobalMesh& mesh, const Teuchos::RCP<co
     }
   }
 
-  using Types = Zoltan2::BasicUserTypes<double, int, long long>;
-  using Adapter = Zoltan2::BasicVectorAdapter<Types>;
-  const double* z = dim == 3 ? centroid.data() + 2 : nullptr;
-  Adapter adapter(count, ids.data(), centroid.data(), centroid.data() + 1, z, 3, 3, 3);
-  Teuchos::ParameterList params;
-  params.set("algorithm", "multijagged");
-  params.set("num_global_parts", size);
-  params.set("imbalance_tolerance", 1.05);
-  Zoltan2::PartitioningProblem<Adapter> problem(&adapter, &params, comm);
-  problem.solve();
-  const auto* parts = problem.getSolution().getPartListView();
-  std::vector<int> localOwner(parts, parts + count);
+  // Every element weighs the same.
+  const std::vector<int> localOwner =
+      partitionWeightedPoints(dim, centroid, std::vector<double>(static_cast<std::size_t>(count), 1.0), comm);
 
   std::vector<int> counts(size), displacements(size);
   for (int r = 0; r < size; ++r) {

@@ -187,16 +187,10 @@ ContactInterface::ContactInterface(const mesh::Mesh& mesh, const std::string& sl
     }
 
   const int rank = comm_->getRank();
-  std::vector<char> nodeOfOwnedFace(numSlaveNodes, 0);
   for (std::size_t k = 0; k < slaveFaces_.size(); ++k)
-    if (slaveFaces_[k].owner == rank) {
-      ownedSlaveFaces_.push_back(static_cast<int>(k));
-      for (int a = 0; a < slaveFaces_[k].numNodes; ++a) nodeOfOwnedFace[indexIn(slaveNodes_, slaveFaces_[k].nodes[a])] = 1;
-    }
-  for (std::size_t i = 0; i < numSlaveNodes; ++i) {
+    if (slaveFaces_[k].owner == rank) ownedSlaveFaces_.push_back(static_cast<int>(k));
+  for (std::size_t i = 0; i < numSlaveNodes; ++i)
     if (mesh.nodeOwner(slaveNodes_[i]) == rank) ownedSlaveNodes_.push_back(static_cast<int>(i));
-    if (nodeOfOwnedFace[i]) slaveNodesOfOwnedFaces_.push_back(static_cast<int>(i));
-  }
 }
 
 int ContactInterface::slaveNodeIndex(long long globalNode) const { return indexIn(slaveNodes_, globalNode); }

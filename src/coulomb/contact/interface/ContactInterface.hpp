@@ -96,9 +96,6 @@ public:
   const std::vector<int>& ownedSlaveFaces() const { return ownedSlaveFaces_; }
   /// Indices into slaveNodes() of the slave nodes this rank owns (increasing).
   const std::vector<int>& ownedSlaveNodes() const { return ownedSlaveNodes_; }
-  /// Indices into slaveNodes() of the nodes of the owned slave faces
-  /// (increasing): the nodal normals a rank needs to integrate its faces.
-  const std::vector<int>& slaveNodesOfOwnedFaces() const { return slaveNodesOfOwnedFaces_; }
 
 private:
   int dimension_ = 3;
@@ -110,7 +107,7 @@ private:
   std::vector<long long> slaveNodes_, interfaceNodes_;
   std::vector<int> nodeFaceOffset_, nodeFaces_, nodeFaceCorner_;
   std::vector<double> referenceCoordinates_;
-  std::vector<int> ownedSlaveFaces_, ownedSlaveNodes_, slaveNodesOfOwnedFaces_;
+  std::vector<int> ownedSlaveFaces_, ownedSlaveNodes_;
 };
 
 /// @brief Coordinates of the interface nodes (ContactInterface::interfaceNodes(),

@@ -7,7 +7,6 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
-#include "coulomb/core/Error.hpp"
 #include "coulomb/mesh/Partition.hpp"
 
 namespace coulomb::contact {

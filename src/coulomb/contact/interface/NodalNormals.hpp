@@ -91,7 +91,7 @@ NodalNormal averagedNormal(int dimension, const std::vector<FaceAtNode>& faces, 
 ///
 /// Returns one entry per ContactInterface::slaveNodes() entry. `slaveNodeIndices`
 /// (indices into slaveNodes()) restricts the work to those nodes, e.g.
-/// contact.slaveNodesOfOwnedFaces() for what a rank integrates; entries not
+/// slaveNodesOfFaces (InterfaceBalance.hpp) of the faces a rank integrates; entries not
 /// listed stay zero. Default (nullptr): every slave node. No communication:
 /// with the same configuration every rank computes the same normals (and
 /// throws the same errors when it computes every node).

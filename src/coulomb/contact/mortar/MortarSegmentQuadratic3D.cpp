@@ -215,14 +215,20 @@ MortarSegment3D<S, Mf, T> integrateQuadraticSegment3D(const FaceNodes<S, T>& xs,
         hi[i] = std::max(hi[i], valueOf(slave.p[c][i]));
       }
     const double margin = 10.0 * tolerance;
+    double origin[3], axis1[3], axis2[3];  // the plane in doubles
+    for (int i = 0; i < 3; ++i) {
+      origin[i] = valueOf(x0[i]);
+      axis1[i] = valueOf(e1[i]);
+      axis2[i] = valueOf(e2[i]);
+    }
     auto besideSlave = [&](const SubFacet& facet) {
       double mLo[2] = {1e300, 1e300}, mHi[2] = {-1e300, -1e300};
       for (int c = 0; c < facet.count; ++c) {
-        double r[3], s[2] = {0.0, 0.0};
-        for (int i = 0; i < 3; ++i) r[i] = valueOf(xm[facet.node[c]][i]) - valueOf(x0[i]);
+        double s[2] = {0.0, 0.0};
         for (int i = 0; i < 3; ++i) {
-          s[0] += r[i] * valueOf(e1[i]);
-          s[1] += r[i] * valueOf(e2[i]);
+          const double r = valueOf(xm[facet.node[c]][i]) - origin[i];
+          s[0] += r * axis1[i];
+          s[1] += r * axis2[i];
         }
         for (int i = 0; i < 2; ++i) {
           mLo[i] = std::min(mLo[i], s[i]);
