@@ -24,26 +24,34 @@ FRICTION = (("Friction Law", "string", "Coulomb"), ("Friction Coefficient", "dou
 PRECISE = ("contact_force_y", "min_gap")  # not rounded: self and pair runs are compared digit by digit
 
 
+def cells(args):
+    """the cells --order and --serendipity ask for"""
+    return "HEX8" if args.order != 2 else "HEX20" if args.serendipity else "HEX27"
+
+
 def run_name(label, args):
-    """tube_r<R>_np<N>[_pair][_mu03][_<tag>]"""
-    return (f"tube_r{label}_np{args.np}" + ("_pair" if args.pair else "") + ("_mu03" if args.friction else "")
-            + (f"_{args.tag}" if args.tag else ""))
+    """tube_r<R>_np<N>[_hex20|_hex27][_pair][_mu03][_<tag>]"""
+    return (f"tube_r{label}_np{args.np}" + ("" if args.order != 2 else "_" + cells(args).lower())
+            + ("_pair" if args.pair else "") + ("_mu03" if args.friction else "") + (f"_{args.tag}" if args.tag else ""))
 
 
-def prepare(run_dir, label, build, pair, friction):
+def prepare(run_dir, label, build, args):
     """mesh (scripts/make_mesh GEO <run_dir>/tube3d_r<label>.e -setnumber r
-    <label>, its console in make_mesh.txt) and deck.xml in run_dir; returns
-    (absolute mesh path, deck path, error text or None)"""
+    <label>, at order 2 with --order 2, incomplete with --serendipity; its
+    console in make_mesh.txt) and deck.xml in run_dir; returns (absolute
+    mesh path, deck path, error text or None)"""
     mesh = os.path.join(run_dir, f"tube3d_r{label}.e")
     deck = os.path.join(run_dir, "deck.xml")
+    order = [] if args.order != 2 else ["-order", "2"] + (
+        ["-string", "Mesh.SecondOrderIncomplete=1;"] if args.serendipity else [])
     make = subprocess.run([os.path.join(REPO, "scripts", "make_mesh"), os.path.join(REPO, GEO), mesh,
-                           "-setnumber", "r", label], cwd=run_dir, capture_output=True, text=True,
+                           "-setnumber", "r", label] + order, cwd=run_dir, capture_output=True, text=True,
                           env=dict(os.environ, COULOMB_BUILD_DIR=build))
     with open(os.path.join(run_dir, "make_mesh.txt"), "w") as f:
         f.write(make.stdout + make.stderr)
     if make.returncode != 0 or not os.path.exists(mesh):
         return mesh, deck, f"mesh of {GEO} at r = {label}: {(make.stderr or make.stdout).strip()[-300:]}"
-    return mesh, deck, write_deck(deck, mesh, pair, friction)
+    return mesh, deck, write_deck(deck, mesh, args.pair, args.friction)
 
 
 def write_deck(out, mesh, pair, friction):

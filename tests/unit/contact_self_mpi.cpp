@@ -42,6 +42,10 @@ const SelfCase kTube{"tube_crush_3d", "tube3d.e", "tube3d.e", "inner_bottom", "i
 /// than the ordinary pair here (63 against 77 sticking nodes), not on the
 /// coarse mesh.
 const SelfCase kTubeFine{"tube_crush_3d", "tube3d.e", "tube3d_r3.e", "inner_bottom", "inner_top", 1, 0.3, 0.05, "y"};
+/// The tube of HEX20 cells (tube3d.geo at order 2, serendipity): QUAD8
+/// faces, whose slave side takes the transformed basis (SlaveTransform.hpp)
+/// on the faces of the slave role alone.
+const SelfCase kTubeHex20{"tube_crush_3d", "tube3d.e", "tube3d_hex20.e", "inner_bottom", "inner_top", 1, 0.3, 0.15, "y"};
 
 /// The shipped deck, solved to 1e-12 of the force scale, with the pair's
 /// sides and options replaced; `newton`: more parameters of the Newton list.
@@ -115,6 +119,16 @@ TEST(ContactSelf, CrushedTubeEqualsThePairOfItsTwoWalls) {
 TEST(ContactSelf, CrushedTubeWithCoulombFrictionEqualsThePairOfItsTwoWalls) {
   expectFrictionalSelfContactEqualsPair(kTube);
   expectFrictionalSelfContactEqualsPair(kTubeFine);
+}
+
+/// Self-contact on QUAD8 faces: the transformed slave rows follow the
+/// faces' roles, which every search decides anew; a master face's nodes
+/// keep physical rows (transforming every face of the surface, both roles,
+/// gives another answer than the ordinary pair).
+TEST(ContactSelf, CrushedHex20TubeEqualsThePairOfItsTwoWalls) {
+  expectSelfContactEqualsPair(kTubeHex20, runCase(kTubeHex20, "tube20_self", "inner", "inner", ""),
+                              runCase(kTubeHex20, "tube20_pair", kTubeHex20.pairSlave, kTubeHex20.pairMaster, ""));
+  expectFrictionalSelfContactEqualsPair(kTubeHex20);
 }
 
 /// Every Krylov solve to 1e-10 (Linear Tolerance = Fixed) on the fine

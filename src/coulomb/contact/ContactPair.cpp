@@ -126,9 +126,6 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
                     what << ": QUAD9 faces on one side and QUAD8 or TRI6 faces on the other cannot be paired (mesh "
                             "both bodies with the same kind of quadratic cells, HEX27 or HEX20/TET10)");
   }
-  COULOMB_REQUIRE(!slaveTransform_->active() || !interface_->selfContact(),
-                  what << ": self-contact on QUAD8 or TRI6 faces is not supported (their transformed slave rows "
-                          "need the slave and master nodes apart)");
   const std::size_t owned = interface_->ownedSlaveNodes().size();
   // eps_n per owned slave node: the deck's value, or the automatic one.
   penalty_.assign(owned, settings.penalty);
@@ -258,6 +255,10 @@ void ContactPair::search() {
       notes_.push_back(note.str());
     }
     droppedSelfLinks_ = selfRoles.droppedLinks;
+    // Quad8 / Tri6 faces: the slave role's faces alone are transformed.
+    std::vector<char> slaveRole(selfRoles.role.size());
+    for (std::size_t f = 0; f < slaveRole.size(); ++f) slaveRole[f] = selfRoles.role[f] == SelfContactRole::Slave;
+    slaveTransform_->useSlaveFaces(slaveRole);
     return;  // every node lies on its own surface: no depth check behind a nearest face
   }
   // Slave nodes inside the master beyond the radius (bodies that overlap):

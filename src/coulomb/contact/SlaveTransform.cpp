@@ -13,16 +13,10 @@ namespace coulomb::contact {
 SlaveTransform::SlaveTransform(const ContactInterface& contact, const std::vector<std::array<bool, 3>>& prescribed,
                                const std::string& what)
     : contact_(contact), prescribed_(prescribed), dim_(contact.dimension()) {
-  const std::size_t n = contact.slaveNodes().size();
-  rowTerms_.resize(n);
-  forceTerms_.resize(n);
-  transformed_.assign(n, 0);
-  edgeCorners_.assign(n, {-1, -1});
-  for (std::size_t j = 0; j < n; ++j) rowTerms_[j] = forceTerms_[j] = {Term{static_cast<int>(j), 1.0}};
   bool quad9 = false;
   for (const ContactFace& f : contact.slaveFaces()) quad9 = quad9 || f.type == mesh::FaceType::Quad9;
-  const double a = kTransformedBasisAlpha;
-  std::set<int> done;
+  // The checks cover every face of the surface, so that useSlaveFaces (any
+  // subset of them, a self-contact surface's slave roles) cannot fail later.
   for (const ContactFace& f : contact.slaveFaces()) {
     const int (*edges)[3] = nullptr;
     const int count = transformedEdges(f.type, &edges);
@@ -33,23 +27,47 @@ SlaveTransform::SlaveTransform(const ContactInterface& contact, const std::vecto
     active_ = true;
     for (int k = 0; k < count; ++k) {
       const int e = contact.slaveNodeIndex(f.nodes[edges[k][0]]);
+      for (int c = 0; c < dim_; ++c)
+        for (int corner : {edges[k][1], edges[k][2]}) {
+          const int j = contact.slaveNodeIndex(f.nodes[corner]);
+          COULOMB_REQUIRE(!prescribedSlave(e, c) || prescribedSlave(j, c),
+                          what << ": node " << contact.slaveNodes()[e] + 1 << " (the mid-side node of an edge of "
+                               << mesh::toString(f.type) << " slave faces) is prescribed in component " << "xyz"[c]
+                               << " but the edge's corner node " << contact.slaveNodes()[j] + 1
+                               << " is not; the transformed basis of these faces needs both (prescribe the whole "
+                                  "edge, e.g. a node set of a surface)");
+        }
+    }
+  }
+  useSlaveFaces(std::vector<char>(contact.slaveFaces().size(), 1));
+}
+
+void SlaveTransform::useSlaveFaces(const std::vector<char>& inUse) {
+  const std::size_t n = contact_.slaveNodes().size();
+  rowTerms_.assign(n, {});
+  forceTerms_.assign(n, {});
+  transformed_.assign(n, 0);
+  edgeCorners_.assign(n, {-1, -1});
+  for (std::size_t j = 0; j < n; ++j) rowTerms_[j] = forceTerms_[j] = {Term{static_cast<int>(j), 1.0}};
+  const double a = kTransformedBasisAlpha;
+  std::set<int> done;
+  const auto& faces = contact_.slaveFaces();
+  for (std::size_t face = 0; face < faces.size(); ++face) {
+    if (!inUse[face]) continue;
+    const ContactFace& f = faces[face];
+    const int (*edges)[3] = nullptr;
+    const int count = transformedEdges(f.type, &edges);
+    for (int k = 0; k < count; ++k) {
+      const int e = contact_.slaveNodeIndex(f.nodes[edges[k][0]]);
       if (!done.insert(e).second) continue;
-      const int c0 = contact.slaveNodeIndex(f.nodes[edges[k][1]]);
-      const int c1 = contact.slaveNodeIndex(f.nodes[edges[k][2]]);
+      const int c0 = contact_.slaveNodeIndex(f.nodes[edges[k][1]]);
+      const int c1 = contact_.slaveNodeIndex(f.nodes[edges[k][2]]);
       edgeCorners_[e] = {c0, c1};
       rowTerms_[e] = {Term{e, 1.0 - 2.0 * a}};
       rowTerms_[c0].push_back(Term{e, a});
       rowTerms_[c1].push_back(Term{e, a});
       forceTerms_[e] = {Term{e, 1.0 / (1.0 - 2.0 * a)}, Term{c0, -a / (1.0 - 2.0 * a)}, Term{c1, -a / (1.0 - 2.0 * a)}};
       transformed_[e] = transformed_[c0] = transformed_[c1] = 1;
-      for (int c = 0; c < dim_; ++c)
-        for (int corner : {c0, c1})
-          COULOMB_REQUIRE(!prescribedSlave(e, c) || prescribedSlave(corner, c),
-                          what << ": node " << contact.slaveNodes()[e] + 1 << " (the mid-side node of an edge of "
-                               << mesh::toString(f.type) << " slave faces) is prescribed in component " << "xyz"[c]
-                               << " but the edge's corner node " << contact.slaveNodes()[corner] + 1
-                               << " is not; the transformed basis of these faces needs both (prescribe the whole "
-                                  "edge, e.g. a node set of a surface)");
     }
   }
 }

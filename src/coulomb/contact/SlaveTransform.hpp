@@ -46,6 +46,18 @@ public:
   /// Whether the pair has transformed faces at all.
   bool active() const { return active_; }
 
+  /// Transforms the edges of the slave faces with inUse[f] (indices of
+  /// ContactInterface::slaveFaces()) alone; the constructor takes them all.
+  /// A self-contact surface (issue 18, item 5) lists every face as slave
+  /// and master, and its faces' roles change with each search
+  /// (SelfContactRoles.hpp): only the faces of the slave role carry the
+  /// transformed multipliers; a node of a master face gets master forces in
+  /// the physical basis, as on an ordinary master surface. The roles never
+  /// put a node on a slave and a master face, so no edge is transformed
+  /// from one side and not from the other. T may change between Newton
+  /// iterations: the equations T^T r = 0 are the same for every invertible T.
+  void useSlaveFaces(const std::vector<char>& inUse);
+
   struct Term {
     int slave = -1;  ///< slave node index (ContactInterface::slaveNodes())
     double coefficient = 0.0;
