@@ -15,12 +15,14 @@
 // [t,a], [a,b], [b,W-t] (default 6, 3, 6 on top and 5, 4, 5 below: the
 // faces across the hole do not match), m through the thickness, k up the
 // side walls, nz along z; r multiplies every count (r = 4: 13932
-// nodes, 41.8k DoFs: scripts/bench tube --ref 4).
+// nodes, 41.8k DoFs: scripts/bench tube --ref 4); tet = 1: tetrahedra on
+// the same grid (-order 2: TET10, TRI6 faces).
 // Make with: scripts/make_mesh exodus_meshes/tube3d.geo tube3d.e [-setnumber r 4]
 DefineConstant[ r = {1, Min 0.1, Name "r: refinement factor of every element count"} ];
 DefineConstant[ m0 = {2, Min 1, Name "m0: elements through a wall (r = 1)"} ];
 DefineConstant[ k0 = {3, Min 1, Name "k0: elements up a side wall (r = 1)"} ];
 DefineConstant[ nz0 = {2, Min 1, Name "nz0: elements along z (r = 1)"} ];
+DefineConstant[ tet = {0, Choices{0, 1}, Name "tet: 1 meshes tetrahedra (the same grid, each hexahedron in six)"} ];
 m = Ceil(m0 * r);
 k = Ceil(k0 * r);
 nz = Ceil(nz0 * r);
@@ -64,12 +66,19 @@ For j In {0:2}
       Curve Loop(s) = {100 + 10 * j + i, 200 + 10 * j + i + 1, -(100 + 10 * (j + 1) + i), -(200 + 10 * j + i)};
       Plane Surface(s) = {s};
       Transfinite Surface{s};
-      Recombine Surface{s};
+      If (tet == 0)
+        Recombine Surface{s};
+      EndIf
       cells[] += s;
     EndIf
   EndFor
 EndFor
-Extrude {0, 0, D} { Surface{cells[]}; Layers{nz}; Recombine; }
+If (tet == 0)
+  Extrude {0, 0, D} { Surface{cells[]}; Layers{nz}; Recombine; }
+Else
+  // Structured triangles extruded without Recombine: each prism in three tetrahedra.
+  Extrude {0, 0, D} { Surface{cells[]}; Layers{nz}; }
+EndIf
 
 e = 1e-6;
 Physical Volume("tube", 1) = Volume{:};

@@ -46,6 +46,8 @@ const SelfCase kTubeFine{"tube_crush_3d", "tube3d.e", "tube3d_r3.e", "inner_bott
 /// faces, whose slave side takes the transformed basis (SlaveTransform.hpp)
 /// on the faces of the slave role alone.
 const SelfCase kTubeHex20{"tube_crush_3d", "tube3d.e", "tube3d_hex20.e", "inner_bottom", "inner_top", 1, 0.3, 0.15, "y"};
+/// The tube of TET10 cells (tube3d.geo with tet = 1 at order 2): TRI6 faces.
+const SelfCase kTubeTet10{"tube_crush_3d", "tube3d.e", "tube3d_tet10.e", "inner_bottom", "inner_top", 1, 0.3, 0.15, "y"};
 
 /// The shipped deck, solved to 1e-12 of the force scale, with the pair's
 /// sides and options replaced; `newton`: more parameters of the Newton list.
@@ -121,7 +123,7 @@ TEST(ContactSelf, CrushedTubeWithCoulombFrictionEqualsThePairOfItsTwoWalls) {
   expectFrictionalSelfContactEqualsPair(kTubeFine);
 }
 
-/// Self-contact on QUAD8 faces: the transformed slave rows follow the
+/// Self-contact on QUAD8 and TRI6 faces: the transformed slave rows follow the
 /// faces' roles, which every search decides anew; a master face's nodes
 /// keep physical rows (transforming every face of the surface, both roles,
 /// gives another answer than the ordinary pair).
@@ -129,6 +131,12 @@ TEST(ContactSelf, CrushedHex20TubeEqualsThePairOfItsTwoWalls) {
   expectSelfContactEqualsPair(kTubeHex20, runCase(kTubeHex20, "tube20_self", "inner", "inner", ""),
                               runCase(kTubeHex20, "tube20_pair", kTubeHex20.pairSlave, kTubeHex20.pairMaster, ""));
   expectFrictionalSelfContactEqualsPair(kTubeHex20);
+}
+
+TEST(ContactSelf, CrushedTet10TubeEqualsThePairOfItsTwoWalls) {
+  expectSelfContactEqualsPair(kTubeTet10, runCase(kTubeTet10, "tube10_self", "inner", "inner", ""),
+                              runCase(kTubeTet10, "tube10_pair", kTubeTet10.pairSlave, kTubeTet10.pairMaster, ""));
+  expectFrictionalSelfContactEqualsPair(kTubeTet10);
 }
 
 /// Every Krylov solve to 1e-10 (Linear Tolerance = Fixed) on the fine
