@@ -61,6 +61,9 @@ coulomb_bad_input(poisson_ratio_half "'Materials/steel/Poisson's Ratio'")
 coulomb_bad_input(poisson_ratio_0_7 "'Materials/steel/Poisson's Ratio'")
 coulomb_bad_input(zero_load_steps "'Load Stepping/Number of Steps'")
 coulomb_bad_input(linear_tolerance_contradiction "'Newton/Linear Tolerance'.*Adaptive.*'Nonlinear Solver")
+coulomb_bad_input(pmultigrid_linear_mesh
+                  "'Linear Solver/Preconditioner Type' = P-Multigrid coarsens quadratic cells to their corners, but the mesh has none"
+                  NP 1 2)
 coulomb_bad_input(missing_mesh_sublist "'Mesh'.*missing")
 coulomb_bad_input(unknown_function "'Neumann Conditions/top pressure/Function'.*'loading'")
 

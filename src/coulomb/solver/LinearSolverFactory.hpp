@@ -9,6 +9,10 @@
 
 #include "coulomb/core/TpetraTypes.hpp"
 
+namespace coulomb::fem {
+struct VertexCoarsening;
+}
+
 namespace coulomb::solver {
 
 /// @brief The defaults: Belos Pseudo Block CG preconditioned by MueLu
@@ -21,16 +25,22 @@ namespace coulomb::solver {
 /// the tangent nonsymmetric): Belos Pseudo Block GMRES instead of CG, and
 /// Gauss-Seidel smoothing in MueLu instead of Chebyshev (whose eigenvalue
 /// bounds assume a symmetric matrix).
+/// `cornerDofs`: the DoFs of the corner nodes of a mesh with quadratic
+/// cells (fem::cornerNodeCount x dofsPerNode; 0 for a linear mesh). From
+/// 5000 on, the preconditioner is "P-Multigrid" (PMultigrid.hpp): the same
+/// MueLu on the corner nodes under a p-coarsening; a deck naming "MueLu"
+/// still gets the MueLu keys.
 Teuchos::RCP<Teuchos::ParameterList> defaultLinearSolverParameters(int dofsPerNode, long long numGlobalDofs,
-                                                                   bool symmetric = true);
+                                                                   bool symmetric = true, long long cornerDofs = 0);
 
-/// @brief Stratimikos builder output plus the MueLu sublist where the
-/// near-null space and coordinates must be set again before each setup
-/// (MueLu's Thyra adapter removes them from the list once used).
+/// @brief Stratimikos builder output plus the MueLu (or P-Multigrid)
+/// sublist where the near-null space and coordinates must be set again
+/// before each setup (MueLu's Thyra adapter removes them once used).
 struct LinearSolver {
   Teuchos::RCP<Thyra::LinearOpWithSolveFactoryBase<double>> factory;
   Teuchos::RCP<Teuchos::ParameterList> parameters;  ///< the full, completed Stratimikos list
   bool usesMueLu = false;
+  bool usesPMultigrid = false;  ///< MueLu under a p-coarsening (PMultigrid.hpp)
   bool isDirect = false;
 };
 
@@ -38,11 +48,12 @@ struct LinearSolver {
 /// coulomb::Error (one line) if Stratimikos rejects the list. "Amesos2" is
 /// served by GatheredDirectSolverFactory (factored on one rank) at any rank count.
 LinearSolver buildLinearSolver(const Teuchos::ParameterList& user, int dofsPerNode,
-                               long long numGlobalDofs, bool symmetric = true);
+                               long long numGlobalDofs, bool symmetric = true, long long cornerDofs = 0);
 
 /// @brief Puts rigid-body modes (3 in 2D, 6 in 3D) and nodal coordinates
-/// into the MueLu sublist of `solver`, as MueLu's "Nullspace"/"Coordinates".
+/// into the MueLu sublist of `solver`, as MueLu's "Nullspace"/"Coordinates";
+/// with P-Multigrid, the corner level `vertices` into its sublist.
 void setMueLuUserData(LinearSolver& solver, const Teuchos::RCP<MultiVector>& nullspace,
-                      const Teuchos::RCP<MultiVector>& coordinates);
+                      const Teuchos::RCP<MultiVector>& coordinates, const fem::VertexCoarsening* vertices = nullptr);
 
 }  // namespace coulomb::solver

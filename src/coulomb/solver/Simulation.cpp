@@ -22,10 +22,12 @@
 #include "coulomb/fem/MeshChecks.hpp"
 #include "coulomb/fem/ModelSettings.hpp"
 #include "coulomb/fem/RigidBodyModes.hpp"
+#include "coulomb/fem/VertexCoarsening.hpp"
 #include "coulomb/io/ExodusReader.hpp"
 #include "coulomb/io/ExodusWriter.hpp"
 #include "coulomb/mesh/Mesh.hpp"
 #include "coulomb/solver/LinearSolverFactory.hpp"
+#include "coulomb/solver/PMultigrid.hpp"
 #include "coulomb/solver/ModelEvaluator.hpp"
 #include "coulomb/solver/NewtonSolver.hpp"
 #include "coulomb/solver/ResultWriter.hpp"
@@ -66,6 +68,7 @@ Teuchos::RCP<MultiVector> byNode(const Vector& v, const fem::DofMap& dofs) {
 struct Simulation::Solvers {
   LinearSolver linear;
   Teuchos::RCP<MultiVector> nullspace, coordinates;
+  fem::VertexCoarsening vertices;  ///< quadratic cells: MueLu's first coarse level
   Teuchos::RCP<ModelEvaluator> model;
   std::unique_ptr<NewtonSolver> newton;
   std::unique_ptr<ResultWriter> writer;
@@ -109,14 +112,19 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
     linear.set("Linear Solver Type", "Amesos2");
   }
   solvers_ = std::make_unique<Solvers>();
+  const long long corners = fem::cornerNodeCount(mesh_->global());
   solvers_->linear = buildLinearSolver(settings_.linearSolver, dofs_->dofsPerNode(),
                                       static_cast<long long>(dofs_->ownedMap()->getGlobalNumElements()),
-                                      !(contact_ && contact_->needsNonsymmetricSolver()));
+                                      !(contact_ && contact_->needsNonsymmetricSolver()), corners * dofs_->dofsPerNode());
+  COULOMB_REQUIRE(!solvers_->linear.usesPMultigrid || corners > 0,
+                  "deck: 'Linear Solver/Preconditioner Type' = " << kPMultigridName
+                      << " coarsens quadratic cells to their corners, but the mesh has none (use MueLu)");
   solvers_->nullspace = fem::rigidBodyModes(*mesh_, *dofs_);
   solvers_->coordinates = fem::nodalCoordinates(*mesh_, *dofs_);
+  if (solvers_->linear.usesPMultigrid) solvers_->vertices = fem::vertexCoarsening(*mesh_, *dofs_);
   Solvers* s = solvers_.get();
   solvers_->model = Teuchos::rcp(new ModelEvaluator(*assembler_, dofs_->ownedMap(), solvers_->linear.factory,
-                                                    [s] { setMueLuUserData(s->linear, s->nullspace, s->coordinates); },
+                                                    [s] { setMueLuUserData(s->linear, s->nullspace, s->coordinates, &s->vertices); },
                                                     contact_.get()));
   solvers_->model->reuseConstantTangent(settings_.reuseConstantTangent);
   // The iteration table is for --verbose (setVerbosity).
