@@ -213,43 +213,34 @@ COULOMB_CONTACT_DUAL_ALL_FACES(Fad3DTriQuad)
 COULOMB_CONTACT_DUAL_ALL_FACES(Fad3DQuadTri)
 COULOMB_CONTACT_DUAL_ALL_FACES(Fad3DQuadQuad)
 // Quadratic faces: Line3 and Quad9 (2D: MortarSegmentCurved2D has its own
-// ring-weighted mass); the Sacado types of MortarSegmentQuadratic3D.
+// ring-weighted mass), Quad8 and Tri6.
 COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Line3, double)
 COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, double)
-using Fad3DQuad9Quad9 = SegmentFad3D<FaceType::Quad9, FaceType::Quad9>;
-using Fad3DQuad9Quad4 = SegmentFad3D<FaceType::Quad9, FaceType::Quad4>;
-using Fad3DQuad9Tri3 = SegmentFad3D<FaceType::Quad9, FaceType::Tri3>;
-using Fad3DQuad4Quad9 = SegmentFad3D<FaceType::Quad4, FaceType::Quad9>;
-using Fad3DTri3Quad9 = SegmentFad3D<FaceType::Tri3, FaceType::Quad9>;
-COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, Fad3DQuad9Quad9)
-COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, Fad3DQuad9Quad4)
-COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, Fad3DQuad9Tri3)
-COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad4, Fad3DQuad4Quad9)
-COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri3, Fad3DTri3Quad9)
-// MortarSegmentQuadratic3D, pairs with a Quad8 or Tri6 face: the slave's
-// type with the input count (PolygonClipping.cpp lists them; Tri3 with 36
-// is above).
+// The sub-facet kernel's Sacado types (SubFacetFad3D: 3 x the nodes of
+// both faces) with the slave types they are used with; Tri3 and Quad4 with
+// 27 to 36 inputs are above.
+using FadInputs27 = Sacado::Fad::SFad<double, 27>;
+using FadInputs30 = Sacado::Fad::SFad<double, 30>;
+using FadInputs33 = Sacado::Fad::SFad<double, 33>;
+using FadInputs36 = Sacado::Fad::SFad<double, 36>;
+using FadInputs39 = Sacado::Fad::SFad<double, 39>;
 using FadInputs42 = Sacado::Fad::SFad<double, 42>;
-using FadInputs45 = Sacado::Fad::SFad<double, 45>;
 using FadInputs48 = Sacado::Fad::SFad<double, 48>;
 using FadInputs54 = Sacado::Fad::SFad<double, 54>;
-using FadInputs57 = Sacado::Fad::SFad<double, 57>;
-using FadInputs60 = Sacado::Fad::SFad<double, 60>;
-using FadInputs66 = Sacado::Fad::SFad<double, 66>;
-using FadInputs72 = Sacado::Fad::SFad<double, 72>;
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, FadInputs54)  // Quad9 / Quad9
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, FadInputs39)  // Quad9 / Quad4
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, FadInputs36)  // Quad9 / Tri3
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad4, FadInputs39)  // Quad4 / Quad9
 COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad8, double)
 COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, double)
-COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad8, FadInputs72)
-COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad8, FadInputs66)
-COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad8, FadInputs60)
-COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad8, FadInputs57)
-COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs54)
-COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs60)
-COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs48)
-COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs45)
-COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad4, FadInputs48)
-COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad4, FadInputs42)
-COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri3, FadInputs42)
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad8, FadInputs48)  // Quad8 / Quad8
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad8, FadInputs42)  // Quad8 / Tri6
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad8, FadInputs36)  // Quad8 / Quad4
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad8, FadInputs33)  // Quad8 / Tri3
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs36)   // Tri6 / Tri6
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs42)   // Tri6 / Quad8
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs30)   // Tri6 / Quad4
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs27)   // Tri6 / Tri3
 #undef COULOMB_CONTACT_DUAL_ALL_FACES
 #undef COULOMB_CONTACT_DUAL_INSTANTIATE
 

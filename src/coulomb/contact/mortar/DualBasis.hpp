@@ -223,9 +223,9 @@ inline std::array<std::array<X, FaceTraits<F>::paramDim>, FaceTraits<F>::nodes> 
 /// interpolates are transformed too (d = T d~: d_c = d~_c, d_e = (1 - 2
 /// alpha) d~_e + alpha (d~_a + d~_b)); ContactPair carries the contact rows
 /// between the two (docs/architecture.md, "Quadratic faces").
+/// (trialFromShapeValues: N~ from the standard values N at the same point.)
 template <mesh::FaceType F, typename X>
-inline NodalValues<F, X> faceTrialValues(const FacePoint<F, X>& xi) {
-  NodalValues<F, X> N = faceShapeValues<F, X>(xi);
+inline NodalValues<F, X> trialFromShapeValues(const NodalValues<F, X>& N) {
   if constexpr (transformedSlaveBasis(F)) {
     const int (*edges)[3] = nullptr;
     const int count = transformedEdges(F, &edges);
@@ -239,6 +239,10 @@ inline NodalValues<F, X> faceTrialValues(const FacePoint<F, X>& xi) {
     return out;
   }
   return N;
+}
+template <mesh::FaceType F, typename X>
+inline NodalValues<F, X> faceTrialValues(const FacePoint<F, X>& xi) {
+  return trialFromShapeValues<F, X>(faceShapeValues<F, X>(xi));
 }
 
 /// @brief Dual shape functions Phi_j = sum_k A_jk N~_k at xi, from the

@@ -16,5 +16,9 @@ using SegmentFad2D = Sacado::Fad::SFad<double, kSegment2DInputs>;
 /// Forward AD over the inputs of a slave S / master Mf segment in 3D.
 template <mesh::FaceType S, mesh::FaceType Mf>
 using SegmentFad3D = Sacado::Fad::SFad<double, segment3DInputs<S, Mf>>;
+/// Forward AD over the coordinates of a slave S / master Mf pair alone (the
+/// sub-facet kernel of MortarSegmentQuadratic3D differentiates the normals by hand).
+template <mesh::FaceType S, mesh::FaceType Mf>
+using SubFacetFad3D = Sacado::Fad::SFad<double, 3 * (FaceTraits<S>::nodes + FaceTraits<Mf>::nodes)>;
 
 }  // namespace coulomb::contact

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include "coulomb/contact/mortar/AuxiliaryPlane.hpp"
@@ -152,21 +153,35 @@ std::vector<SubFacet> convexPieces(const SubFacet& f, const std::array<Point2<T>
 
 }  // namespace
 
+namespace {
+
+/// d g~_j / d n_a,i (n_a the slave's nodal normals), [j][a][i].
+template <FaceType S>
+using GapNormalDerivative = std::array<std::array<std::array<double, 3>, FaceTraits<S>::nodes>, FaceTraits<S>::nodes>;
+
+/// The kernel (see the header) with the nodal normals as plain values: they
+/// enter g~ alone, through n = sum_a N_a n_a at a Gauss point, so their
+/// derivatives are summed here by hand (`dGapNormal`, when not null) and
+/// the Sacado type need only carry the coordinates: a third fewer
+/// derivatives in every operation. The Gauss-point sums are of the trial
+/// functions N~ (D~_k, M~_kl, g~~_k); the dual coefficients A, the same at
+/// every point, are applied once at the end (Phi_j = sum_k A_jk N~_k).
 template <FaceType S, FaceType Mf, typename T>
-MortarSegment3D<S, Mf, T> integrateQuadraticSegment3D(const FaceNodes<S, T>& xs, const FaceNodes<S, T>& ns,
-                                                      const FaceNodes<Mf, T>& xm, double relativeTolerance) {
+MortarSegment3D<S, Mf, T> integrateSubFacets(const FaceNodes<S, T>& xs, const FaceNodes<S, double>& ns,
+                                             const FaceNodes<Mf, T>& xm, double relativeTolerance,
+                                             GapNormalDerivative<S>* dGapNormal) {
   using std::sqrt;
   constexpr int nS = FaceTraits<S>::nodes;
   constexpr int nM = FaceTraits<Mf>::nodes;
-  MortarSegment3D<S, Mf, T> out;
+  MortarSegment3D<S, Mf, T> out;  // first the sums of N~_k, then (the end) of Phi_j
   for (int j = 0; j < nS; ++j) {
     out.D[j] = 0.0;
     out.gap[j] = 0.0;
     for (int l = 0; l < nM; ++l) out.M[j][l] = 0.0;
   }
   out.area = 0.0;
+  GapNormalDerivative<S> dTrialGap{};  // d (sum N~_k g_n dA) / d n_a,i
   static const std::vector<SubFacet> slaveFacets = subFacets<S>(), masterFacets = subFacets<Mf>();
-  const NodalMatrix<S, T> A = dualCoefficients<S, T>(xs);
   const TriangleRule7& rule = triangleRule7();
 
   for (const SubFacet& fs : slaveFacets) {
@@ -277,24 +292,80 @@ MortarSegment3D<S, Mf, T> integrateQuadraticSegment3D(const FaceNodes<S, T>& xs,
             const FacePoint<S, T> xi1 = slave.template parentPoint<S>(p, &toParent);
             const FacePoint<Mf, T> xi2 = master.template parentPoint<Mf>(p);
             const NodalValues<S, T> N1 = faceShapeValues<S, T>(xi1);
-            const NodalValues<S, T> phi = dualShapeValues<S, T, T>(A, xi1);
+            const NodalValues<S, T> trial = trialFromShapeValues<S, T>(N1);
             const NodalValues<Mf, T> N2 = faceShapeValues<Mf, T>(xi2);
-            const Vec3<T> x1 = facePoint<S, T, T>(xs, xi1);
-            const Vec3<T> x2 = facePoint<Mf, T, T>(xm, xi2);
-            Vec3<T> n{T(0.0), T(0.0), T(0.0)};
+            Vec3<T> x1{T(0.0), T(0.0), T(0.0)}, x2{T(0.0), T(0.0), T(0.0)}, n{T(0.0), T(0.0), T(0.0)};
             for (int a = 0; a < nS; ++a)
-              for (int i = 0; i < 3; ++i) n[i] += N1[a] * ns[a][i];
-            const T gn = dot(sub(x2, x1), n) / sqrt(dot(n, n));
+              for (int i = 0; i < 3; ++i) {
+                x1[i] += N1[a] * xs[a][i];
+                n[i] += N1[a] * ns[a][i];
+              }
+            for (int l = 0; l < nM; ++l)
+              for (int i = 0; i < 3; ++i) x2[i] += N2[l] * xm[l][i];
+            const Vec3<T> r = sub(x2, x1);
+            const T nNorm = sqrt(dot(n, n));
+            const T gn = dot(r, n) / nNorm;
             // The parent's surface measure |x_xi × x_eta| dxi1, dxi1 = det(d xi1 / d p) dp:
             // the measure faceMass integrates, so the dual basis stays biorthogonal.
             const Vec3<T> nx = tangentNormal<S, T>(faceShapeGradients<S, T>(xi1), xs);
-            addGaussPoint(out, phi, N2, gn, T(rule.w[g] * cellArea * sqrt(dot(nx, nx)) * toParent));
+            const T dA = rule.w[g] * cellArea * sqrt(dot(nx, nx)) * toParent;
+            for (int k = 0; k < nS; ++k) {
+              const T w = trial[k] * dA;
+              out.D[k] += w;
+              out.gap[k] += w * gn;
+              for (int l = 0; l < nM; ++l) out.M[k][l] += w * N2[l];
+            }
+            out.area += dA;
+            if (dGapNormal != nullptr) {
+              // d g_n / d n = r / |n| - (r . n) n / |n|^3, and d n / d n_a = N_a.
+              const double norm = valueOf(nNorm), rn = valueOf(dot(r, n));
+              double q[3];
+              for (int i = 0; i < 3; ++i)
+                q[i] = valueOf(r[i]) / norm - rn * valueOf(n[i]) / (norm * norm * norm);
+              for (int k = 0; k < nS; ++k) {
+                const double w = valueOf(trial[k]) * valueOf(dA);
+                for (int a = 0; a < nS; ++a) {
+                  const double wa = w * valueOf(N1[a]);
+                  for (int i = 0; i < 3; ++i) dTrialGap[k][a][i] += wa * q[i];
+                }
+              }
+            }
           }
         }
       }
     }
   }
-  return out;
+  // Phi_j = sum_k A_jk N~_k: D_j, M_jl, g~_j from the sums of N~_k.
+  const NodalMatrix<S, T> A = dualCoefficients<S, T>(xs);
+  MortarSegment3D<S, Mf, T> dual = out;
+  for (int j = 0; j < nS; ++j) {
+    dual.D[j] = 0.0;
+    dual.gap[j] = 0.0;
+    for (int l = 0; l < nM; ++l) dual.M[j][l] = 0.0;
+    for (int k = 0; k < nS; ++k) {
+      dual.D[j] += A[j][k] * out.D[k];
+      dual.gap[j] += A[j][k] * out.gap[k];
+      for (int l = 0; l < nM; ++l) dual.M[j][l] += A[j][k] * out.M[k][l];
+    }
+  }
+  if (dGapNormal != nullptr)
+    for (int j = 0; j < nS; ++j)
+      for (int a = 0; a < nS; ++a)
+        for (int i = 0; i < 3; ++i) {
+          double sum = 0.0;
+          for (int k = 0; k < nS; ++k) sum += valueOf(A[j][k]) * dTrialGap[k][a][i];
+          (*dGapNormal)[j][a][i] = sum;
+        }
+  return dual;
+}
+
+}  // namespace
+
+template <FaceType S, FaceType Mf, typename T>
+MortarSegment3D<S, Mf, T> integrateQuadraticSegment3D(const FaceNodes<S, T>& xs, const FaceNodes<S, T>& ns,
+                                                      const FaceNodes<Mf, T>& xm, double relativeTolerance) {
+  static_assert(std::is_same_v<T, double>, "values only: linearizeQuadraticSegment3D differentiates");
+  return integrateSubFacets<S, Mf, T>(xs, ns, xm, relativeTolerance, nullptr);
 }
 
 template <FaceType S, FaceType Mf>
@@ -302,9 +373,43 @@ MortarSegment3DLinearization<S, Mf> linearizeQuadraticSegment3D(const FaceNodes<
                                                                 const FaceNodes<S, double>& ns,
                                                                 const FaceNodes<Mf, double>& xm,
                                                                 double relativeTolerance) {
-  return linearize3D<S, Mf>(xs, ns, xm, [&](const auto& fxs, const auto& fns, const auto& fxm) {
-    return integrateQuadraticSegment3D<S, Mf, SegmentFad3D<S, Mf>>(fxs, fns, fxm, relativeTolerance);
-  });
+  // Sacado over the coordinates alone ([0, 3 nS) slave, [3 nS, 3 nS + 3 nM)
+  // master); the normals' derivatives come from integrateSubFacets.
+  constexpr int nS = FaceTraits<S>::nodes;
+  constexpr int nM = FaceTraits<Mf>::nodes;
+  constexpr int nC = 3 * (nS + nM);
+  using Fad = SubFacetFad3D<S, Mf>;
+  FaceNodes<S, Fad> fxs;
+  FaceNodes<Mf, Fad> fxm;
+  for (int a = 0; a < nS; ++a)
+    for (int i = 0; i < 3; ++i) fxs[a][i] = Fad(nC, 3 * a + i, xs[a][i]);
+  for (int l = 0; l < nM; ++l)
+    for (int i = 0; i < 3; ++i) fxm[l][i] = Fad(nC, 3 * nS + 3 * l + i, xm[l][i]);
+  GapNormalDerivative<S> dGapNormal{};
+  const MortarSegment3D<S, Mf, Fad> r = integrateSubFacets<S, Mf, Fad>(fxs, ns, fxm, relativeTolerance, &dGapNormal);
+  // Into the layout of MortarSegment3DLinearization: [0, 3 nS) slave
+  // coordinates, [3 nS, 6 nS) normals, [6 nS, 6 nS + 3 nM) master.
+  auto input = [](int c) { return c < 3 * nS ? c : c + 3 * nS; };
+  MortarSegment3DLinearization<S, Mf> lin;
+  lin.value.contributes = r.contributes;
+  lin.value.polygonVertices = r.polygonVertices;
+  lin.value.area = r.area.val();
+  for (int c = 0; c < nC; ++c) lin.dArea[input(c)] = r.area.dx(c);
+  for (int j = 0; j < nS; ++j) {
+    lin.value.D[j] = r.D[j].val();
+    lin.value.gap[j] = r.gap[j].val();
+    for (int c = 0; c < nC; ++c) {
+      lin.dD[j][input(c)] = r.D[j].dx(c);
+      lin.dGap[j][input(c)] = r.gap[j].dx(c);
+    }
+    for (int a = 0; a < nS; ++a)
+      for (int i = 0; i < 3; ++i) lin.dGap[j][3 * nS + 3 * a + i] = dGapNormal[j][a][i];
+    for (int l = 0; l < nM; ++l) {
+      lin.value.M[j][l] = r.M[j][l].val();
+      for (int c = 0; c < nC; ++c) lin.dM[j][l][input(c)] = r.M[j][l].dx(c);
+    }
+  }
+  return lin;
 }
 
 #define COULOMB_QUADRATIC_3D_INSTANTIATE(S, Mf)                                                                     \

@@ -227,33 +227,17 @@ COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DTriTri)
 COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DTriQuad)
 COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DQuadTri)
 COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DQuadQuad)
-// MortarSegmentQuadratic3D (pairs with a Quad9).
-using Fad3DQuad9Quad9 = SegmentFad3D<FaceType::Quad9, FaceType::Quad9>;
-using Fad3DQuad9Quad4 = SegmentFad3D<FaceType::Quad9, FaceType::Quad4>;
-using Fad3DQuad9Tri3 = SegmentFad3D<FaceType::Quad9, FaceType::Tri3>;
-using Fad3DQuad4Quad9 = SegmentFad3D<FaceType::Quad4, FaceType::Quad9>;
-using Fad3DTri3Quad9 = SegmentFad3D<FaceType::Tri3, FaceType::Quad9>;
-COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DQuad9Quad9)
-COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DQuad9Quad4)
-COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DQuad9Tri3)
-COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DQuad4Quad9)
-COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DTri3Quad9)
-// MortarSegmentQuadratic3D, pairs with a Quad8 or Tri6 face: the input
-// counts not already above (Quad8/Quad8 72, Quad8/Quad4 and Tri6/Quad8 60,
-// Quad8/Tri3 57, Tri6/Tri6 54, Tri6/Quad4 and Quad4/Quad8 48, Quad4/Tri6
-// and Tri3/Quad8 42; Quad8/Tri6 66, Tri6/Tri3 45 and Tri3/Tri6 36 are).
-using FadInputs72 = Sacado::Fad::SFad<double, 72>;
-COULOMB_CONTACT_CLIP_INSTANTIATE(FadInputs72)
-using FadInputs60 = Sacado::Fad::SFad<double, 60>;
-COULOMB_CONTACT_CLIP_INSTANTIATE(FadInputs60)
-using FadInputs57 = Sacado::Fad::SFad<double, 57>;
-COULOMB_CONTACT_CLIP_INSTANTIATE(FadInputs57)
+// MortarSegmentQuadratic3D (SubFacetFad3D: 3 x the nodes of both faces),
+// the counts not above (27 to 36): Quad9/Quad9 54, Quad8/Quad8 48,
+// Quad8/Tri6 and Tri6/Quad8 42, Quad9/Quad4 and Quad4/Quad9 39.
 using FadInputs54 = Sacado::Fad::SFad<double, 54>;
 COULOMB_CONTACT_CLIP_INSTANTIATE(FadInputs54)
 using FadInputs48 = Sacado::Fad::SFad<double, 48>;
 COULOMB_CONTACT_CLIP_INSTANTIATE(FadInputs48)
 using FadInputs42 = Sacado::Fad::SFad<double, 42>;
 COULOMB_CONTACT_CLIP_INSTANTIATE(FadInputs42)
+using FadInputs39 = Sacado::Fad::SFad<double, 39>;
+COULOMB_CONTACT_CLIP_INSTANTIATE(FadInputs39)
 #undef COULOMB_CONTACT_CLIP_INSTANTIATE
 
 }  // namespace coulomb::contact
