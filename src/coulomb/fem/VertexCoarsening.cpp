@@ -2,6 +2,8 @@
 /// @brief The corner-node coarse level of a quadratic mesh (see the header).
 #include "coulomb/fem/VertexCoarsening.hpp"
 
+#include "coulomb/fem/RigidBodyModes.hpp"
+
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 
@@ -107,25 +109,12 @@ VertexCoarsening vertexCoarsening(const mesh::Mesh& mesh, const DofMap& dofs) {
   }
   out.prolongator->fillComplete(coarseMap, dofs.ownedMap());
 
-  out.nullspace = Teuchos::rcp(new MultiVector(coarseMap, dim == 2 ? 3 : 6));
+  std::vector<double> cornerCoordinates(ownedVertices.size() * dim);
   out.coordinates = Teuchos::rcp(new MultiVector(coarseNodeMap, dim));
-  auto m = out.nullspace->get2dViewNonConst();
   auto x = out.coordinates->get2dViewNonConst();
-  for (std::size_t i = 0; i < ownedVertices.size(); ++i) {
-    const double* X = &global.coordinates[ownedVertices[i] * dim];
-    for (int d = 0; d < dim; ++d) {
-      x[d][i] = X[d];
-      m[d][i * dim + d] = 1.0;
-    }
-    if (dim == 2) {
-      m[2][i * 2 + 0] = -X[1];
-      m[2][i * 2 + 1] = X[0];
-    } else {
-      m[3][i * 3 + 1] = -X[2], m[3][i * 3 + 2] = X[1];
-      m[4][i * 3 + 0] = X[2], m[4][i * 3 + 2] = -X[0];
-      m[5][i * 3 + 0] = -X[1], m[5][i * 3 + 1] = X[0];
-    }
-  }
+  for (std::size_t i = 0; i < ownedVertices.size(); ++i)
+    for (int d = 0; d < dim; ++d) x[d][i] = cornerCoordinates[i * dim + d] = global.coordinates[ownedVertices[i] * dim + d];
+  out.nullspace = rigidBodyModes(coarseMap, cornerCoordinates, dim);
   return out;
 }
 
