@@ -40,8 +40,9 @@ template <mesh::FaceType S, mesh::FaceType Mf, typename T>
 MortarSegment3D<S, Mf, T> integrateQuadraticSegment3D(const FaceNodes<S, T>& xs, const FaceNodes<S, T>& ns,
                                                       const FaceNodes<Mf, T>& xm, double relativeTolerance);
 
-/// @brief Values and derivatives (Sacado SFad over segment3DInputs<S, Mf>;
-/// input order as linearizeSegment3D).
+/// @brief Values and derivatives (input order as linearizeSegment3D): Sacado
+/// SFad over the coordinates alone (SubFacetFad3D), the nodal normals'
+/// derivatives (of g~ only) summed by hand.
 template <mesh::FaceType S, mesh::FaceType Mf>
 MortarSegment3DLinearization<S, Mf> linearizeQuadraticSegment3D(const FaceNodes<S, double>& xs,
                                                                 const FaceNodes<S, double>& ns,
