@@ -44,27 +44,29 @@ VertexCoarsening vertexCoarsening(const mesh::Mesh& mesh, const DofMap& dofs) {
   const mesh::GlobalMesh& global = mesh.global();
   if (!hasQuadraticCells(global)) return out;
 
-  // Per global node: a corner of some cell (a vertex), and otherwise the
-  // corners it is the mean of, from the first cell that has it (the mesh is
-  // replicated on every rank, so every rank finds the same).
+  // Per global node: a corner of some cell (a vertex). Per owned node that
+  // is not: the corners it is the mean of, from a local cell that has it (a
+  // node's owner holds a cell around it, Mesh.hpp; in a conforming mesh
+  // every such cell names the same corners).
   const long long numNodes = global.numNodes();
   const std::vector<char> vertex = cornerNodes(global);
-  std::vector<std::array<long long, 8>> means;
-  std::vector<int> meanCount(numNodes, 0);
-  std::vector<int> meanIndex(numNodes, -1);
-  for (const auto& block : global.blocks) {
+  const int owned = mesh.numOwnedNodes();
+  std::vector<std::array<long long, 8>> means(owned);
+  std::vector<int> meanCount(owned, 0);
+  for (std::size_t b = 0; b < global.blocks.size(); ++b) {
+    const auto& block = global.blocks[b];
     const int n = mesh::numNodes(block.cellType), corners = mesh::numCorners(block.cellType);
-    for (long long e = 0; e < block.numElements(); ++e)
+    for (long long element : mesh.localElements(b)) {
+      const long long e = element - block.firstElement;
       for (int a = corners; a < n; ++a) {
         const long long node = block.connectivity[e * n + a];
-        if (vertex[node] || meanIndex[node] >= 0) continue;
+        const int local = mesh.localNode(node);
+        if (vertex[node] || local < 0 || local >= owned || meanCount[local] > 0) continue;
         const mesh::NodeCorners c = mesh::nodeCorners(block.cellType, a);
-        std::array<long long, 8> list{};
-        for (int k = 0; k < c.count; ++k) list[k] = block.connectivity[e * n + c.corners[k]];
-        meanIndex[node] = static_cast<int>(means.size());
-        meanCount[node] = c.count;
-        means.push_back(list);
+        for (int k = 0; k < c.count; ++k) means[local][k] = block.connectivity[e * n + c.corners[k]];
+        meanCount[local] = c.count;
       }
+    }
   }
 
   // The corner nodes numbered 0, 1, ... in global node order (the same on
@@ -99,11 +101,11 @@ VertexCoarsening vertexCoarsening(const mesh::Mesh& mesh, const DofMap& dofs) {
         out.prolongator->insertGlobalValues(row, 1, &one, &col);
         continue;
       }
-      if (meanIndex[node] < 0) continue;  // a node of no cell: a zero row
-      const int corners = meanCount[node];
+      const int corners = meanCount[i];
+      if (corners == 0) continue;  // a node of no cell: a zero row
       std::vector<GlobalOrdinal> cols(corners);
       std::vector<double> values(corners, 1.0 / corners);
-      for (int k = 0; k < corners; ++k) cols[k] = DofMap::globalDof(coarseIndex[means[meanIndex[node]][k]], c, dim);
+      for (int k = 0; k < corners; ++k) cols[k] = DofMap::globalDof(coarseIndex[means[i][k]], c, dim);
       out.prolongator->insertGlobalValues(row, corners, values.data(), cols.data());
     }
   }
