@@ -39,7 +39,6 @@ public:
     muelu.sublist("user data").set("Coordinates", parameters.get<Teuchos::RCP<MultiVector>>("Coarse Coordinates"));
     coarse_ = MueLu::CreateTpetraPreconditioner<double, LocalOrdinal, GlobalOrdinal, CrsMatrix::node_type>(
         Teuchos::RCP<Operator>(coarse), muelu);
-    coarseMatrix_ = coarse;
     auto smoother = [&](const char* name, bool zeroStart) {
       auto relaxation = Teuchos::rcp(new Relaxation(A));
       Teuchos::ParameterList list = parameters.sublist(name);
@@ -82,7 +81,6 @@ public:
 private:
   Teuchos::RCP<const CrsMatrix> A_;
   Teuchos::RCP<CrsMatrix> P_;
-  Teuchos::RCP<const CrsMatrix> coarseMatrix_;
   Teuchos::RCP<Operator> coarse_;
   Teuchos::RCP<Relaxation> pre_, post_;
   mutable Teuchos::RCP<MultiVector> z_, r_, rc_, zc_;

@@ -309,13 +309,7 @@ MortarSegment3D<S, Mf, T> integrateSubFacets(const FaceNodes<S, T>& xs, const Fa
             // the measure faceMass integrates, so the dual basis stays biorthogonal.
             const Vec3<T> nx = tangentNormal<S, T>(faceShapeGradients<S, T>(xi1), xs);
             const T dA = rule.w[g] * cellArea * sqrt(dot(nx, nx)) * toParent;
-            for (int k = 0; k < nS; ++k) {
-              const T w = trial[k] * dA;
-              out.D[k] += w;
-              out.gap[k] += w * gn;
-              for (int l = 0; l < nM; ++l) out.M[k][l] += w * N2[l];
-            }
-            out.area += dA;
+            addGaussPoint(out, trial, N2, gn, dA);  // the sums of N~_k (Phi_j applied at the end)
             if (dGapNormal != nullptr) {
               // d g_n / d n = r / |n| - (r . n) n / |n|^3, and d n / d n_a = N_a.
               const double norm = valueOf(nNorm), rn = valueOf(dot(r, n));
