@@ -66,18 +66,20 @@ using mesh::FaceType;
 /// d input_i / d x.
 using InputChain = std::vector<std::vector<std::pair<DofKey, double>>>;
 
-InputChain buildChain(int dim, const ContactFace& slave, const ContactFace& master,
-                      const ContactInterface& contact, const std::vector<NodalNormal>& normals) {
+/// A key (node, kNormalKey + k) stands for the normal component n_k of
+/// slave node `node` while a pass sums its pairs: d q / d n_a is summed over
+/// every pair of node a first, and chained through d n_a / d x (some tens
+/// of DoFs of the faces around a) once per row at the end of the pass
+/// (expandNormalKeys), instead of once per pair — a node is in some tens of
+/// pairs.
+constexpr int kNormalKey = 8;
+
+InputChain buildChain(int dim, const ContactFace& slave, const ContactFace& master) {
   const int nS = slave.numNodes, nM = master.numNodes;
   InputChain chain(static_cast<std::size_t>(dim * (2 * nS + nM)));
   for (int a = 0; a < nS; ++a) {
     for (int c = 0; c < dim; ++c) chain[a * dim + c].push_back({{slave.nodes[a], c}, 1.0});
-    const NodalNormal& n = normals[contact.slaveNodeIndex(slave.nodes[a])];
-    COULOMB_CHECK(!n.derivative.empty(), "mortar pass needs the normal derivative at node " +
-                                               std::to_string(slave.nodes[a] + 1));
-    for (int k = 0; k < dim; ++k)
-      for (const NormalDerivative& d : n.derivative)
-        chain[dim * nS + a * dim + k].push_back({{d.node, d.component}, d.dn[k]});
+    for (int k = 0; k < dim; ++k) chain[dim * nS + a * dim + k].push_back({{slave.nodes[a], kNormalKey + k}, 1.0});
   }
   for (int l = 0; l < nM; ++l)
     for (int c = 0; c < dim; ++c) chain[dim * 2 * nS + l * dim + c].push_back({{master.nodes[l], c}, 1.0});
@@ -157,7 +159,7 @@ void integrateWith(const PairContext& p, const ContactFace& s, const ContactFace
   if (p.withDerivatives && integrate(xs, ns, xm).contributes) {
     const Lin lin = linearize(xs, ns, xm);
     if (!lin.value.contributes) return;
-    const InputChain chain = buildChain(FaceTraits<S>::spaceDim, s, m, p.contact, p.normals);
+    const InputChain chain = buildChain(FaceTraits<S>::spaceDim, s, m);
     accumulate(lin.value, &lin, &chain, s, m, p.out);
   } else if (!p.withDerivatives) {
     const auto value = integrate(xs, ns, xm);
@@ -241,6 +243,27 @@ void integratePair(const PairContext& p, const ContactFace& s, const ContactFace
   }
 }
 
+/// Replaces the normal keys of `row` (kNormalKey) by their chain through
+/// the nodal normals' derivatives: d q / d x += sum_k (d q / d n_a,k) d n_a,k / d x.
+void expandNormalKeys(DerivativeRow& row, const ContactInterface& contact, const std::vector<NodalNormal>& normals) {
+  std::vector<std::pair<DofKey, double>> normalTerms;
+  for (auto it = row.begin(); it != row.end();) {
+    if (it->first.second < kNormalKey) {
+      ++it;
+      continue;
+    }
+    normalTerms.push_back(*it);
+    it = row.erase(it);
+  }
+  for (const auto& [key, value] : normalTerms) {
+    const int i = contact.slaveNodeIndex(key.first);
+    COULOMB_CHECK(i >= 0 && !normals[i].derivative.empty(),
+                  "mortar pass needs the normal derivative at node " + std::to_string(key.first + 1));
+    const int k = key.second - kNormalKey;
+    for (const NormalDerivative& d : normals[i].derivative) row[{d.node, d.component}] += value * d.dn[k];
+  }
+}
+
 }  // namespace
 
 NodalMortarQuantities integrateMortarPass(const ContactInterface& contact, const InterfaceConfiguration& x,
@@ -259,7 +282,14 @@ NodalMortarQuantities integrateMortarPass(const ContactInterface& contact, const
   result.dimension = contact.dimension();
   result.withDerivatives = withDerivatives;
   result.entries.reserve(out.size());
-  for (auto& [node, entry] : out) result.entries.push_back(std::move(entry));
+  for (auto& [node, entry] : out) {
+    if (withDerivatives) {
+      expandNormalKeys(entry.dD, contact, normals);
+      expandNormalKeys(entry.dGap, contact, normals);
+      for (auto& [l, row] : entry.dM) expandNormalKeys(row, contact, normals);
+    }
+    result.entries.push_back(std::move(entry));
+  }
   return result;
 }
 
