@@ -107,6 +107,29 @@ TEST(Mortar2DCurved, StraightLine3PatchIdentities) {
   }
 }
 
+// A master seven times as long as the slave face covers it (tests/zoo
+// dissimilar_patch_2d at order 2: base faces of 1/7, punch faces of 1/22):
+// its far corner projects to s ~ 5 on the slave, where the projection's
+// Newton steps stall at ~1e-13, above a round-off criterion of 1e-14 (1 + |s|).
+// The pair must still count in full: D_j = int N_j, the M rows sum to D_j.
+TEST(Mortar2DCurved, LongMasterCoveringTheSlaveCountsInFull) {
+  const L3 xs = line3({0.86363636363636365, 0.5}, {0.90909090909090906, 0.5});
+  const L3 xm = line3({1.0, 0.5}, {0.8571428571428571, 0.5});
+  const auto mass = lineMass<FaceType::Line3, double>(xs, false);
+  const auto r = integrateCurvedSegment2D<FaceType::Line3, FaceType::Line3, double>(xs, upNormals(), xm, 1e-12, false);
+  ASSERT_TRUE(r.contributes);
+  for (int j = 0; j < 3; ++j) {
+    EXPECT_NEAR(r.D[j], mass.De[j], 1e-15) << j;
+    double sumM = 0;
+    for (double m : r.M[j]) sumM += m;
+    EXPECT_NEAR(sumM, r.D[j], 1e-15) << j;
+    EXPECT_NEAR(r.gap[j], 0.0, 1e-15) << j;
+  }
+  const auto lin = linearizeCurvedSegment2D<FaceType::Line3, FaceType::Line3>(xs, upNormals(), xm, 1e-12, false);
+  ASSERT_TRUE(lin.value.contributes);
+  for (int j = 0; j < 3; ++j) EXPECT_NEAR(lin.value.D[j], mass.De[j], 1e-15) << j;
+}
+
 /// Central differences of every output against every input of a curved
 /// configuration (h = 1e-6): the Sacado derivatives match to 1e-7.
 template <FaceType S, FaceType Mf>

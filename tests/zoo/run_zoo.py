@@ -3,6 +3,7 @@
 
     /usr/bin/python3 tests/zoo/run_zoo.py [--exe PATH] [--np N] [--cases a,b,...] [--out DIR]
                                           [--markdown] [--mu-sweep] [--timeout S]
+                                          [--order 2 [--serendipity]]
 
 Every tests/zoo/<case>.json (keys: geo, mesh_args, dim, check, expected) is a case
 with the deck tests/zoo/<case>.xml. For each case the runner
@@ -21,6 +22,11 @@ with the deck tests/zoo/<case>.xml. For each case the runner
      failed leaves only OUT/<case>.e.part and is reported without a check).
 It prints a table (plain, or markdown with --markdown) and writes one JSON line
 per case to OUT/zoo.jsonl. Exit code 0 when every case converged and passed.
+
+--order 2 meshes every case at order 2 into OUT/meshes/<case>_order2.e
+(QUAD9 / TRI6 / HEX27 / TET10 cells; with --serendipity QUAD8 / HEX20,
+<case>_order2s.e) and runs the unchanged deck on it (`coulomb deck -m mesh`):
+the same problems on quadratic cells, with the defaults.
 
 --mu-sweep runs xml/friction_punch.xml with the contact friction coefficient
 replaced by 0.1, 0.3, 0.5, 0.7, 0.9 and 1.0 (copies of the deck in OUT, its
@@ -115,9 +121,14 @@ def mpi_command(exe, np_):
     return cmd + ["-np", str(np_), exe]
 
 
-def make_mesh(case, spec, build_dir):
-    """tests/zoo/meshes/<case>.e from the case's .geo when missing or stale; returns (path, error)"""
+def make_mesh(case, spec, build_dir, args=None):
+    """tests/zoo/meshes/<case>.e from the case's .geo when missing or stale; returns (path, error).
+    With args.order 2: OUT/meshes/<case>_order2[s].e, made every run."""
     geo = os.path.join(HERE, spec["geo"])
+    if args is not None and args.order == 2:
+        mesh = os.path.join(args.out, "meshes", case + ("_order2s.e" if args.serendipity else "_order2.e"))
+        extra = ["-order", "2"] + (["-string", "Mesh.SecondOrderIncomplete=1;"] if args.serendipity else [])
+        return run_make_mesh(geo, mesh, list(spec.get("mesh_args", [])) + extra, build_dir)
     mesh = os.path.join(HERE, "meshes", case + ".e")
     sources = [geo, os.path.join(HERE, case + ".json")]
     if os.path.exists(mesh) and all(os.path.getmtime(mesh) >= os.path.getmtime(s) for s in sources if
@@ -137,11 +148,11 @@ def run_make_mesh(geo, mesh, args, build_dir):
     return mesh, None
 
 
-def run_solver(exe, np_, deck, result, log, timeout):
+def run_solver(exe, np_, deck, result, log, timeout, mesh=None):
     for stale in (result, result + ".part"):
         if os.path.exists(stale):
             os.remove(stale)
-    cmd = mpi_command(exe, np_) + [deck, "-o", result]
+    cmd = mpi_command(exe, np_) + [deck, "-o", result] + (["-m", mesh] if mesh else [])
     start = time.monotonic()
     try:
         proc = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=timeout,
@@ -202,13 +213,14 @@ def run_case(name, spec, args, build_dir):
     elif not os.path.exists(deck):
         mesh_error = "no deck %s" % deck
     else:
-        mesh, mesh_error = make_mesh(name, spec, build_dir)
+        mesh, mesh_error = make_mesh(name, spec, build_dir, args)
     if mesh_error:
         rec = {"case": name, "np": args.np, "converged": False, "rc": None, "steps": 0, "planned": planned,
                "cutbacks": 0, "newton": 0, "linear": 0, "newton_per_increment": None, "linear_per_solve": None,
                "wall_s": None, "run_s": 0.0, "error": mesh_error, "dofs": None}
     else:
-        rc, text, seconds = run_solver(args.exe, args.np, deck, result, log, args.timeout)
+        rc, text, seconds = run_solver(args.exe, args.np, deck, result, log, args.timeout,
+                                       mesh if args.order == 2 else None)
         rec = outcome(name, args.np, rc, text, seconds, result, planned)
     rec["dim"] = spec.get("dim")
     rec["expected_text"] = spec.get("expected")
@@ -337,7 +349,13 @@ def main():
     ap.add_argument("--markdown", action="store_true")
     ap.add_argument("--mu-sweep", action="store_true", help="run xml/friction_punch.xml for mu = 0.1 ... 1.0")
     ap.add_argument("--timeout", type=float, default=900, help="seconds per run before it counts as failed")
+    ap.add_argument("--order", type=int, choices=(1, 2), default=1,
+                    help="2: every case meshed at order 2 into OUT/meshes (quadratic cells)")
+    ap.add_argument("--serendipity", action="store_true", help="with --order 2: QUAD8 / HEX20 cells")
     args = ap.parse_args()
+    if args.serendipity and args.order != 2:
+        print("run_zoo: --serendipity needs --order 2", file=sys.stderr)
+        return 2
     args.exe = os.path.abspath(args.exe)
     args.out = os.path.abspath(args.out)
     if not os.access(args.exe, os.X_OK):
