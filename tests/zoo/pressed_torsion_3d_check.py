@@ -7,7 +7,8 @@ Last written step (the deck's comment gives the derivation and tolerances):
   value     T = |sum over `top` of x R_y - y R_x| (torque of the reactions)
   expected  mu sum_j p_j r_j A_j over the slave nodes (contact_pressure p_j,
             r_j the distance to the z axis, A_j = integral of the node's
-            bilinear shape function over the slave faces)   tolerance 1e-3
+            shape function over the slave faces: HEX8, HEX20 or HEX27 cells)
+            tolerance 1e-3
   condition T against Lubkin on the meshed disc, mu P int(r dA) / A
             (P = -reaction_top_z, = (2/3) mu P a on the exact disc), 1.5 %
 Extras: T / ((2/3) mu P a), the torque of the tangential tractions, sum p_j A_j
@@ -33,12 +34,20 @@ G4 = [(-0.8611363115940526, 0.3478548451374538), (-0.3399810435848563, 0.6521451
       (0.3399810435848563, 0.6521451548625461), (0.8611363115940526, 0.3478548451374538)]
 
 
-def slave_faces(path, nodes):
-    """quadrilateral faces (0-based node indices) of the HEX8 cells whose four nodes are all in `nodes`"""
+def slave_faces(path, nodes, xyz):
+    """faces on the slave surface of the hexahedral cells whose corners are all in
+    `nodes`: 0-based node lists, the four corners in cyclic order, then (HEX20,
+    HEX27) the nodes of the sides 01, 12, 23, 30 and (HEX27) the face centre.
+    The cell's node nearest to a side's midpoint (to the corners' mean) is that
+    side's (the face's centre) node: no table of the Exodus numbering needed."""
     import numpy as np
     from netCDF4 import Dataset
     inside = set(int(i) for i in nodes)
     faces = []
+
+    def nearest(candidates, point):
+        return min(candidates, key=lambda v: float(np.linalg.norm(xyz[v] - point)))
+
     with Dataset(path) as ds:
         ds.set_auto_mask(False)
         for name in ds.variables:
@@ -46,15 +55,60 @@ def slave_faces(path, nodes):
                 continue
             conn = np.array(ds.variables[name][:], dtype=int) - 1
             for cell in conn:
+                extra = [int(v) for v in cell[8:]]
                 for f in HEX_FACES:
                     face = [int(cell[k]) for k in f]
-                    if all(v in inside for v in face):
-                        faces.append(face)
+                    if not all(v in inside for v in face):
+                        continue
+                    if extra:
+                        face += [nearest(extra, 0.5 * (xyz[face[k]] + xyz[face[(k + 1) % 4]])) for k in range(4)]
+                    if len(cell) == 27:
+                        face.append(nearest(extra, xyz[face[:4]].mean(axis=0)))
+                    faces.append(face)
     return faces
 
 
+CORNERS = ((-1, -1), (1, -1), (1, 1), (-1, 1))
+SIDES = ((0, -1), (1, 0), (0, 1), (-1, 0))
+
+
+def shape(count, xi, eta):
+    """values and xi-, eta-derivatives of the QUAD4 / QUAD8 / QUAD9 shape functions
+    in the node order of slave_faces"""
+    def lagrange(a, t):  # 1D quadratic through -1, 0, 1, and its derivative
+        return {-1: (0.5 * t * (t - 1), t - 0.5), 0: (1 - t * t, -2 * t), 1: (0.5 * t * (t + 1), t + 0.5)}[a]
+
+    if count == 4:
+        N = [0.25 * (1 + a * xi) * (1 + b * eta) for a, b in CORNERS]
+        dx = [0.25 * a * (1 + b * eta) for a, b in CORNERS]
+        de = [0.25 * b * (1 + a * xi) for a, b in CORNERS]
+        return N, dx, de
+    if count == 8:
+        N = [0.25 * (1 + a * xi) * (1 + b * eta) * (a * xi + b * eta - 1) for a, b in CORNERS]
+        dx = [0.25 * a * (1 + b * eta) * (2 * a * xi + b * eta) for a, b in CORNERS]
+        de = [0.25 * b * (1 + a * xi) * (a * xi + 2 * b * eta) for a, b in CORNERS]
+        for a, b in SIDES:
+            if a == 0:
+                N.append(0.5 * (1 - xi * xi) * (1 + b * eta))
+                dx.append(-xi * (1 + b * eta))
+                de.append(0.5 * b * (1 - xi * xi))
+            else:
+                N.append(0.5 * (1 + a * xi) * (1 - eta * eta))
+                dx.append(0.5 * a * (1 - eta * eta))
+                de.append(-eta * (1 + a * xi))
+        return N, dx, de
+    N, dx, de = [], [], []
+    for a, b in CORNERS + SIDES + ((0, 0),):
+        (la, dla), (lb, dlb) = lagrange(a, xi), lagrange(b, eta)
+        N.append(la * lb)
+        dx.append(dla * lb)
+        de.append(la * dlb)
+    return N, dx, de
+
+
 def face_integrals(xyz, faces):
-    """A_j = int N_j dA per node, and int dA, int r dA over the faces (4 x 4 Gauss, bilinear map)"""
+    """A_j = int N_j dA per node, and int dA, int r dA over the faces (4 x 4 Gauss,
+    the faces' own shape functions: QUAD4, QUAD8 or QUAD9)"""
     import numpy as np
     area = {}
     total, moment = 0.0, 0.0
@@ -62,9 +116,7 @@ def face_integrals(xyz, faces):
         x = xyz[face]
         for xi, wx in G4:
             for eta, wy in G4:
-                N = 0.25 * np.array([(1 - xi) * (1 - eta), (1 + xi) * (1 - eta), (1 + xi) * (1 + eta), (1 - xi) * (1 + eta)])
-                dxi = 0.25 * np.array([-(1 - eta), (1 - eta), (1 + eta), -(1 + eta)])
-                deta = 0.25 * np.array([-(1 - xi), -(1 + xi), (1 + xi), (1 - xi)])
+                N, dxi, deta = (np.array(v) for v in shape(len(face), xi, eta))
                 J = np.linalg.norm(np.cross(dxi @ x, deta @ x)) * wx * wy
                 p = N @ x
                 total += J
@@ -86,7 +138,7 @@ try:
     tx, ty = r.nodal("contact_tangential_traction_x"), r.nodal("contact_tangential_traction_y")
 except KeyError as e:
     zx.fail_read(CASE, str(e))
-faces = slave_faces(r.path, slave)
+faces = slave_faces(r.path, slave, X)
 if not faces:
     zx.fail_read(CASE, "no slave faces found in the connectivity")
 A, area, moment = face_integrals(X, faces)
