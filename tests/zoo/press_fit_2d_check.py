@@ -31,41 +31,6 @@ def lame_pressure():
     return E * DELTA / ((1 + NU) * B * (ring + disc))
 
 
-def slave_weights(path, nodes):
-    """int N_j ds over the cell sides on the slave arc, per node (0-based): a side
-    between two corners of a cell (the first 3 or 4 connectivity entries) whose
-    corners are both in `nodes`; h/2 to each corner (QUAD4, TRI3), or h/6 to each
-    corner and 2h/3 to the mid-side node (QUAD8, QUAD9, TRI6: its mid-side nodes
-    follow the corners in side order)"""
-    import numpy as np
-    from netCDF4 import Dataset
-    inside = set(int(i) for i in nodes)
-    weight, seen = {}, set()
-    with Dataset(path) as ds:
-        ds.set_auto_mask(False)
-        for name in ds.variables:
-            if not name.startswith("connect"):
-                continue
-            conn = np.array(ds.variables[name][:], dtype=int) - 1
-            corners = 4 if conn.shape[1] in (4, 8, 9) else 3
-            quadratic = conn.shape[1] > corners
-            for cell in conn:
-                for k in range(corners):
-                    a, b = int(cell[k]), int(cell[(k + 1) % corners])
-                    if a not in inside or b not in inside or (min(a, b), max(a, b)) in seen:
-                        continue
-                    seen.add((min(a, b), max(a, b)))
-                    h = math.hypot(*(X[a] - X[b]))
-                    if quadratic:
-                        mid = int(cell[corners + k])
-                        for j, w in ((a, h / 6), (b, h / 6), (mid, 2 * h / 3)):
-                            weight[j] = weight.get(j, 0.0) + w
-                    else:
-                        for j in (a, b):
-                            weight[j] = weight.get(j, 0.0) + h / 2
-    return weight
-
-
 r = zx.open_result(CASE, sys.argv)
 try:
     X = r.coords
@@ -76,7 +41,7 @@ try:
     fx = r.glob_last("contact_force_fit_x")
 except KeyError as e:
     zx.fail_read(CASE, str(e))
-L = slave_weights(r.path, slave)
+L = zx.side_weights(r.path, slave, X[:, 0], X[:, 1])
 total = sum(L.get(j, 0.0) for j in slave)
 p_mean = sum(p[j] * L.get(j, 0.0) for j in slave) / total
 p_lame = lame_pressure()

@@ -7,10 +7,9 @@ Last written step (the deck's comment gives the derivation and the tolerance):
   value     F = |reaction_pull_x| (the pull force)
   expected  mu |reaction_outer_y| (mu N, N from the sleeve's y equilibrium), 1e-3 relative
   condition F against mu sum_j p_j L_j (the integrated contact pressure, L_j the
-            slave node's length on the deformed sleeve bottom) within 1e-3, every
+            slave node's int N_j ds on the deformed sleeve bottom) within 1e-3, every
             active slave node slipping, and the final time reached
 """
-import math
 import os
 import sys
 
@@ -24,24 +23,6 @@ TOLERANCE = 1e-3
 FINAL_TIME = 12.0
 
 
-def slave_segments(path, nodes):
-    """QUAD4 edges (0-based node pairs) whose two nodes are both in `nodes`"""
-    import numpy as np
-    from netCDF4 import Dataset
-    inside = set(int(i) for i in nodes)
-    segs = set()
-    with Dataset(path) as ds:
-        ds.set_auto_mask(False)
-        for name in ds.variables:
-            if name.startswith("connect"):
-                for cell in np.array(ds.variables[name][:], dtype=int) - 1:
-                    for k in range(len(cell)):
-                        a, b = int(cell[k]), int(cell[(k + 1) % len(cell)])
-                        if a in inside and b in inside:
-                            segs.add((min(a, b), max(a, b)))
-    return sorted(segs)
-
-
 r = zx.open_result(CASE, sys.argv)
 try:
     slave = r.node_set("slave")
@@ -53,11 +34,7 @@ try:
     N_reaction = abs(r.glob_last("reaction_outer_y"))
 except KeyError as e:
     zx.fail_read(CASE, str(e))
-L = {}
-for a, b in slave_segments(r.path, slave):
-    half = 0.5 * math.hypot(x[a] - x[b], y[a] - y[b])
-    L[a] = L.get(a, 0.0) + half
-    L[b] = L.get(b, 0.0) + half
+L = zx.side_weights(r.path, slave, x, y)  # on the deformed sleeve bottom
 N_pressure = sum(p[j] * L.get(j, 0.0) for j in slave)
 active = [j for j in slave if state[j] > 0.5]
 slipping = sum(1 for j in active if state[j] < 1.5)
