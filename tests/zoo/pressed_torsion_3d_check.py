@@ -41,30 +41,24 @@ def slave_faces(path, nodes, xyz):
     The cell's node nearest to a side's midpoint (to the corners' mean) is that
     side's (the face's centre) node: no table of the Exodus numbering needed."""
     import numpy as np
-    from netCDF4 import Dataset
     inside = set(int(i) for i in nodes)
     faces = []
 
     def nearest(candidates, point):
         return min(candidates, key=lambda v: float(np.linalg.norm(xyz[v] - point)))
 
-    with Dataset(path) as ds:
-        ds.set_auto_mask(False)
-        for name in ds.variables:
-            if not name.startswith("connect"):
-                continue
-            conn = np.array(ds.variables[name][:], dtype=int) - 1
-            for cell in conn:
-                extra = [int(v) for v in cell[8:]]
-                for f in HEX_FACES:
-                    face = [int(cell[k]) for k in f]
-                    if not all(v in inside for v in face):
-                        continue
-                    if extra:
-                        face += [nearest(extra, 0.5 * (xyz[face[k]] + xyz[face[(k + 1) % 4]])) for k in range(4)]
-                    if len(cell) == 27:
-                        face.append(nearest(extra, xyz[face[:4]].mean(axis=0)))
-                    faces.append(face)
+    for conn in zx.connectivities(path):
+        for cell in conn:
+            extra = [int(v) for v in cell[8:]]
+            for f in HEX_FACES:
+                face = [int(cell[k]) for k in f]
+                if not all(v in inside for v in face):
+                    continue
+                if extra:
+                    face += [nearest(extra, 0.5 * (xyz[face[k]] + xyz[face[(k + 1) % 4]])) for k in range(4)]
+                if len(cell) == 27:
+                    face.append(nearest(extra, xyz[face[:4]].mean(axis=0)))
+                faces.append(face)
     return faces
 
 

@@ -120,6 +120,16 @@ def open_result(case, argv):
     return r
 
 
+def connectivities(path):
+    """the connectivity of every element block of the result file: arrays of
+    0-based node indices, one row per cell"""
+    import numpy as np
+    from netCDF4 import Dataset
+    with Dataset(path) as ds:
+        ds.set_auto_mask(False)
+        return [np.array(ds.variables[name][:], dtype=int) - 1 for name in ds.variables if name.startswith("connect")]
+
+
 def side_weights(path, nodes, x, y):
     """int N_j ds per node (0-based) over the cell sides on a 2D surface, at the
     coordinates x, y (arrays by node): a side between two consecutive corners of a
@@ -128,29 +138,22 @@ def side_weights(path, nodes, x, y):
     the side's mid node (QUAD8, QUAD9, TRI6: the mid nodes follow the corners in
     side order)"""
     import math
-    import numpy as np
-    from netCDF4 import Dataset
     inside = set(int(i) for i in nodes)
     weight, seen = {}, set()
-    with Dataset(path) as ds:
-        ds.set_auto_mask(False)
-        for name in ds.variables:
-            if not name.startswith("connect"):
-                continue
-            conn = np.array(ds.variables[name][:], dtype=int) - 1
-            corners = 4 if conn.shape[1] in (4, 8, 9) else 3
-            quadratic = conn.shape[1] > corners
-            for cell in conn:
-                for k in range(corners):
-                    a, b = int(cell[k]), int(cell[(k + 1) % corners])
-                    if a not in inside or b not in inside or (min(a, b), max(a, b)) in seen:
-                        continue
-                    seen.add((min(a, b), max(a, b)))
-                    h = math.hypot(x[a] - x[b], y[a] - y[b])
-                    ends = ((a, h / 6), (b, h / 6), (int(cell[corners + k]), 2 * h / 3)) if quadratic else \
-                        ((a, h / 2), (b, h / 2))
-                    for j, w in ends:
-                        weight[j] = weight.get(j, 0.0) + w
+    for conn in connectivities(path):
+        corners = 4 if conn.shape[1] in (4, 8, 9) else 3
+        quadratic = conn.shape[1] > corners
+        for cell in conn:
+            for k in range(corners):
+                a, b = int(cell[k]), int(cell[(k + 1) % corners])
+                if a not in inside or b not in inside or (min(a, b), max(a, b)) in seen:
+                    continue
+                seen.add((min(a, b), max(a, b)))
+                h = math.hypot(x[a] - x[b], y[a] - y[b])
+                ends = ((a, h / 6), (b, h / 6), (int(cell[corners + k]), 2 * h / 3)) if quadratic else \
+                    ((a, h / 2), (b, h / 2))
+                for j, w in ends:
+                    weight[j] = weight.get(j, 0.0) + w
     return weight
 
 
