@@ -66,13 +66,7 @@ bool projectOntoSlave(const std::array<T, 2>& p, const std::array<T, 2>& c, cons
     if (!(std::abs(v[1]) > 1e-14 * dd2)) return false;  // normal field parallel to the line
     const double step = v[0] / v[1];
     s -= step;
-    // Newton converges quadratically: a step of 1e-10 leaves an error of
-    // ~1e-20, and the step in T below refines once more. A step at round-off
-    // (1e-14) was unreachable for a point far outside the face (a master
-    // seven times as long as the slave face: s ~ 8, steps ~1.6e-13 there)
-    // and dropped the pair: D of its slave nodes incomplete, the active set
-    // chattering (tests/zoo at order 2).
-    converged = std::abs(step) <= 1e-10 * (1.0 + std::abs(s));
+    converged = projectionConverged(step, s);  // MortarSegment2D.hpp
   }
   if (!converged || !std::isfinite(s)) return false;
   const T sT = s;

@@ -41,6 +41,7 @@
 /// Scalar types: integrateSegment2D is explicitly instantiated for double and
 /// Sacado::Fad::SFad<double, 12> in MortarSegment2D.cpp.
 #include <array>
+#include <cmath>
 
 #include "coulomb/contact/mortar/DualBasis.hpp"
 
@@ -83,6 +84,16 @@ FaceMass<mesh::FaceType::Line2, T> ringMass(const Line2Nodes<T>& xs);
 /// Equal radii give the plane [[2, -1], [-1, 2]].
 template <typename T>
 NodalMatrix<mesh::FaceType::Line2, T> axisymmetricDual(const Line2Nodes<T>& xs);
+
+/// Whether the Newton iteration of a 2D projection (a point onto a face along
+/// a normal) has converged after a step `step` ending at face parameter `s`.
+/// Newton converges quadratically there: a step of 1e-10 leaves an error of
+/// ~1e-20, and the kernels take one more step in their scalar type after it.
+/// A step at round-off (1e-14) was unreachable for a point far outside the
+/// face (a master seven times as long as the slave face: s ~ 8, steps of
+/// ~1.6e-13) and dropped the pair — D of its slave nodes incomplete, the
+/// active set chattering (tests/zoo at order 2, tests/performance/README.md).
+inline bool projectionConverged(double step, double s) { return std::abs(step) <= 1e-10 * (1.0 + std::abs(s)); }
 
 extern template MortarSegment2D<double> integrateSegment2D<double>(const Line2Nodes<double>&,
                                                                    const Line2Nodes<double>&,

@@ -1,6 +1,7 @@
 /// @file MortarSegmentCurved2D.cpp
 /// @brief Segment-based mortar integration of 2D pairs with a Line3 face (see the header).
 #include "coulomb/contact/mortar/MortarSegmentCurved2D.hpp"
+#include "coulomb/contact/mortar/MortarSegment2D.hpp"
 
 #include <Sacado.hpp>
 
@@ -87,13 +88,7 @@ bool projectOntoSlave(const std::array<T, 2>& p, const FaceNodes<S, T>& xs, cons
     if (!(std::abs(df) > 1e-14 * c2)) return false;
     const double step = f / df;
     s -= step;
-    // Newton converges quadratically: a step of 1e-10 leaves an error of
-    // ~1e-20, and the step in T below refines once more. A step at round-off
-    // (1e-14) was unreachable for a point far outside the face (a master
-    // seven times as long as the slave face: s ~ 8, steps ~1.6e-13 there)
-    // and dropped the pair: D of its slave nodes incomplete, the active set
-    // chattering (tests/zoo at order 2).
-    converged = std::abs(step) <= 1e-10 * (1.0 + std::abs(s));
+    converged = projectionConverged(step, s);  // MortarSegment2D.hpp
   }
   if (!converged || !std::isfinite(s)) return false;
   const FacePoint<S, T> at{T(s)};
@@ -133,13 +128,7 @@ bool projectOntoMaster(const std::array<T, 2>& x1, const std::array<T, 2>& n, co
     if (!(std::abs(df) > 0.0)) return false;
     const double step = f / df;
     s -= step;
-    // Newton converges quadratically: a step of 1e-10 leaves an error of
-    // ~1e-20, and the step in T below refines once more. A step at round-off
-    // (1e-14) was unreachable for a point far outside the face (a master
-    // seven times as long as the slave face: s ~ 8, steps ~1.6e-13 there)
-    // and dropped the pair: D of its slave nodes incomplete, the active set
-    // chattering (tests/zoo at order 2).
-    converged = std::abs(step) <= 1e-10 * (1.0 + std::abs(s));
+    converged = projectionConverged(step, s);  // MortarSegment2D.hpp
   }
   if (!converged || !std::isfinite(s)) return false;
   const FacePoint<Mf, T> at{T(s)};
