@@ -62,43 +62,40 @@ namespace {
 
 using mesh::FaceType;
 
-/// Chain rule of one pair: for each kernel input i, the (dof, weight) terms of
-/// d input_i / d x.
-using InputChain = std::vector<std::vector<std::pair<DofKey, double>>>;
-
-/// A key (node, kNormalKey + k) stands for the normal component n_k of
-/// slave node `node` while a pass sums its pairs: d q / d n_a is summed over
-/// every pair of node a first, and chained through d n_a / d x (some tens
-/// of DoFs of the faces around a) once per row at the end of the pass
-/// (expandNormalKeys), instead of once per pair — a node is in some tens of
-/// pairs.
+/// The column of each kernel input of one pair, in the kernels' order
+/// (slave coordinates, slave normals, master coordinates): a DoF (node,
+/// component) of a face node, or for a normal component the key (node,
+/// kNormalKey + k). That key stands for n_k of the slave node while a pass
+/// sums its pairs: d q / d n_a is summed over every pair of node a first and
+/// chained through d n_a / d x (some tens of DoFs of the faces around a)
+/// once per row at the end of the pass (expandNormalKeys), not once per
+/// pair — a node is in some tens of pairs.
 constexpr int kNormalKey = 8;
 
-InputChain buildChain(int dim, const ContactFace& slave, const ContactFace& master) {
+std::vector<DofKey> inputKeys(int dim, const ContactFace& slave, const ContactFace& master) {
   const int nS = slave.numNodes, nM = master.numNodes;
-  InputChain chain(static_cast<std::size_t>(dim * (2 * nS + nM)));
-  for (int a = 0; a < nS; ++a) {
-    for (int c = 0; c < dim; ++c) chain[a * dim + c].push_back({{slave.nodes[a], c}, 1.0});
-    for (int k = 0; k < dim; ++k) chain[dim * nS + a * dim + k].push_back({{slave.nodes[a], kNormalKey + k}, 1.0});
-  }
+  std::vector<DofKey> keys(static_cast<std::size_t>(dim * (2 * nS + nM)));
+  for (int a = 0; a < nS; ++a)
+    for (int c = 0; c < dim; ++c) {
+      keys[a * dim + c] = {slave.nodes[a], c};
+      keys[dim * nS + a * dim + c] = {slave.nodes[a], kNormalKey + c};
+    }
   for (int l = 0; l < nM; ++l)
-    for (int c = 0; c < dim; ++c) chain[dim * 2 * nS + l * dim + c].push_back({{master.nodes[l], c}, 1.0});
-  return chain;
+    for (int c = 0; c < dim; ++c) keys[dim * 2 * nS + l * dim + c] = {master.nodes[l], c};
+  return keys;
 }
 
 template <std::size_t N>
-void chainRow(const std::array<double, N>& dq, const InputChain& chain, DerivativeRow& row) {
-  for (std::size_t i = 0; i < N; ++i) {
-    if (dq[i] == 0.0) continue;
-    for (const auto& [key, weight] : chain[i]) row[key] += dq[i] * weight;
-  }
+void addToRow(const std::array<double, N>& dq, const std::vector<DofKey>& keys, DerivativeRow& row) {
+  for (std::size_t i = 0; i < N; ++i)
+    if (dq[i] != 0.0) row[keys[i]] += dq[i];
 }
 
 /// Adds the values (and derivatives, if `lin`) of one pair to the nodal entries.
 /// Value: a MortarSegment2D<double> or MortarSegment3D<S, M, double>; Lin: the
 /// matching linearization (or nullptr).
 template <typename Value, typename Lin>
-void accumulate(const Value& value, const Lin* lin, const InputChain* chain, const ContactFace& slave,
+void accumulate(const Value& value, const Lin* lin, const std::vector<DofKey>* keys, const ContactFace& slave,
                 const ContactFace& master, std::map<long long, NodalMortarEntry>& out) {
   const int nS = slave.numNodes, nM = master.numNodes;
   for (int j = 0; j < nS; ++j) {
@@ -108,9 +105,9 @@ void accumulate(const Value& value, const Lin* lin, const InputChain* chain, con
     e.gap += value.gap[j];
     for (int l = 0; l < nM; ++l) e.M[master.nodes[l]] += value.M[j][l];
     if (lin) {
-      chainRow(lin->dD[j], *chain, e.dD);
-      chainRow(lin->dGap[j], *chain, e.dGap);
-      for (int l = 0; l < nM; ++l) chainRow(lin->dM[j][l], *chain, e.dM[master.nodes[l]]);
+      addToRow(lin->dD[j], *keys, e.dD);
+      addToRow(lin->dGap[j], *keys, e.dGap);
+      for (int l = 0; l < nM; ++l) addToRow(lin->dM[j][l], *keys, e.dM[master.nodes[l]]);
     }
   }
 }
@@ -159,8 +156,8 @@ void integrateWith(const PairContext& p, const ContactFace& s, const ContactFace
   if (p.withDerivatives && integrate(xs, ns, xm).contributes) {
     const Lin lin = linearize(xs, ns, xm);
     if (!lin.value.contributes) return;
-    const InputChain chain = buildChain(FaceTraits<S>::spaceDim, s, m);
-    accumulate(lin.value, &lin, &chain, s, m, p.out);
+    const std::vector<DofKey> keys = inputKeys(FaceTraits<S>::spaceDim, s, m);
+    accumulate(lin.value, &lin, &keys, s, m, p.out);
   } else if (!p.withDerivatives) {
     const auto value = integrate(xs, ns, xm);
     if (!value.contributes) return;
