@@ -4,6 +4,11 @@
 // Make with: scripts/make_mesh exodus_meshes/contact_patch3d.geo contact_patch3d.e
 DefineConstant[ nb = {3, Min 1, Name "nb: base elements per edge"} ];
 DefineConstant[ np = {4, Min 1, Name "np: punch elements per edge"} ];
+// Mixed meshes: tetbase = 1 meshes the base, tetpunch = 1 the punch, with
+// structured tetrahedra instead of hexahedra (at -order 2: a HEX27 or HEX20
+// body on a TET10 one, or the other way round).
+DefineConstant[ tetbase = {0, Choices{0, 1}, Name "tetbase: tetrahedra in the base"} ];
+DefineConstant[ tetpunch = {0, Choices{0, 1}, Name "tetpunch: tetrahedra in the punch"} ];
 
 Point(1) = {0, 0, 0};
 Point(2) = {1, 0, 0};
@@ -17,8 +22,12 @@ Curve Loop(1) = {1, 2, 3, 4};
 Plane Surface(1) = {1};
 Transfinite Curve{1, 2, 3, 4} = nb + 1;
 Transfinite Surface{1};
-Recombine Surface{1};
-base[] = Extrude {0, 0, 0.5} { Surface{1}; Layers{2}; Recombine; };
+If (tetbase)
+  base[] = Extrude {0, 0, 0.5} { Surface{1}; Layers{2}; };
+Else
+  Recombine Surface{1};
+  base[] = Extrude {0, 0, 0.5} { Surface{1}; Layers{2}; Recombine; };
+EndIf
 
 // Tags from 101: the base's extrusion took the next free ones. The punch is
 // built one unit higher and moved down afterwards, so that gmsh does not merge
@@ -35,8 +44,12 @@ Curve Loop(101) = {101, 102, 103, 104};
 Plane Surface(101) = {101};
 Transfinite Curve{101, 102, 103, 104} = np + 1;
 Transfinite Surface{101};
-Recombine Surface{101};
-punch[] = Extrude {0, 0, 0.5} { Surface{101}; Layers{3}; Recombine; };
+If (tetpunch)
+  punch[] = Extrude {0, 0, 0.5} { Surface{101}; Layers{3}; };
+Else
+  Recombine Surface{101};
+  punch[] = Extrude {0, 0, 0.5} { Surface{101}; Layers{3}; Recombine; };
+EndIf
 Geometry.AutoCoherence = 0;
 Translate {0, 0, -1} { Volume{punch[1]}; }
 

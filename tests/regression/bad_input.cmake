@@ -109,9 +109,9 @@ coulomb_bad_input(contact_surface_inside_body
 coulomb_bad_input(contact_self_surface_inside_body
                   "Contact/Pairs/joint: self-contact side set 'left_face': side 2 of element 1 is inside a body [(]element 2"
                   NP 1 2 CDL contact_inside_body.cdl)
-coulomb_bad_input(contact_quad9_on_quad8
-                  "Contact/Pairs/joint: QUAD9 faces on one side and QUAD8 or TRI6 faces on the other cannot be paired"
-                  CHECK NP 1 2 CDL hex27_under_hex20.cdl)
+coulomb_bad_input(contact_self_mixed_quadratic
+                  "Contact/Pairs/joint: the slave surface has QUAD9 faces and TRI6 faces [(]element [0-9]+[)]; contact on quadratic faces takes one kind per surface"
+                  CHECK NP 1 2)
 coulomb_bad_input(axisymmetric_thickness
                   "'Element Blocks/body/Thickness' has no meaning with 'Problem/Plane Assumption' = 'Axisymmetric'" NP 1 2)
 coulomb_bad_input(axisymmetric_negative_radius

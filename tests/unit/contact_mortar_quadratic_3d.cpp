@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "QuadraticFaces.hpp"
 #include "QuadraticSegmentChecks.hpp"
 #include "coulomb/contact/mortar/MortarSegmentQuadratic3D.hpp"
 
@@ -13,31 +14,10 @@ namespace coulomb::contact {
 namespace {
 
 using mesh::FaceType;
-using Q9 = FaceNodes<FaceType::Quad9, double>;
+using test::quad9;
+using test::Q9;
+using test::reversed;
 using Q4 = FaceNodes<FaceType::Quad4, double>;
-
-/// The Quad9 of the rectangle [x0, x0 + a] x [y0, y0 + b] at height z, its
-/// nodes at the Exodus reference positions mapped affinely; `bow` lifts the
-/// mid-side and centre nodes (a curved face), `skew` shears x by y.
-Q9 quad9(double x0, double y0, double a, double b, double z, double bow = 0.0, double skew = 0.0) {
-  Q9 x{};
-  for (int k = 0; k < 9; ++k) {
-    const double s = kQuad9Node[k][0], t = kQuad9Node[k][1];
-    const bool corner = k < 4;
-    x[k] = {x0 + a * (s + 1) / 2 + skew * (t + 1) / 2, y0 + b * (t + 1) / 2, z + (corner ? 0.0 : bow * (k == 8 ? 1.0 : 0.5))};
-  }
-  return x;
-}
-
-Q9 up() {
-  Q9 n{};
-  for (auto& v : n) v = {0.0, 0.0, 1.0};
-  return n;
-}
-
-/// The master seen from the slave: the same face with its orientation reversed
-/// (nodes 0 3 2 1, 7 6 5 4, 8), as a body facing the slave has.
-Q9 reversed(const Q9& x) { return {x[0], x[3], x[2], x[1], x[7], x[6], x[5], x[4], x[8]}; }
 
 
 // D_e = int N_j dA of a Quad9 on a rectangle of area A: A/36 at corners,
@@ -67,16 +47,16 @@ TEST(Mortar3DQuadratic, PlaneParallelFacesGiveThePatchIdentities) {
   auto check = [&](const auto& r, double area) { test::expectPatchIdentities(r, 9, g, area); };
   // A Quad9 master over x in [0.7, 3], y in [-1, 1.3] (a part), then one covering all.
   check(integrateQuadraticSegment3D<FaceType::Quad9, FaceType::Quad9, double>(
-            slave, up(), reversed(quad9(0.7, -1.0, 2.3, 2.3, g)), 1e-12),
+            slave, test::up<FaceType::Quad9>(), reversed(quad9(0.7, -1.0, 2.3, 2.3, g)), 1e-12),
         1.3 * 1.3 + 0.05 * 1.3 * 1.3);
   const auto covering = integrateQuadraticSegment3D<FaceType::Quad9, FaceType::Quad9, double>(
-      slave, up(), reversed(quad9(-1.0, -1.0, 4.0, 4.0, g)), 1e-12);
+      slave, test::up<FaceType::Quad9>(), reversed(quad9(-1.0, -1.0, 4.0, 4.0, g)), 1e-12);
   check(covering, 4.0);
   const auto mass = faceMass<FaceType::Quad9, double>(slave);
   for (int j = 0; j < 9; ++j) EXPECT_NEAR(covering.D[j], mass.De[j], 1e-12) << j;
   // A linear master over the same part.
   const Q4 master{{{0.7, -1.0, g}, {0.7, 1.3, g}, {3.0, 1.3, g}, {3.0, -1.0, g}}};
-  check(integrateQuadraticSegment3D<FaceType::Quad9, FaceType::Quad4, double>(slave, up(), master, 1e-12),
+  check(integrateQuadraticSegment3D<FaceType::Quad9, FaceType::Quad4, double>(slave, test::up<FaceType::Quad9>(), master, 1e-12),
         1.3 * 1.3 + 0.05 * 1.3 * 1.3);
 }
 
@@ -87,18 +67,13 @@ TEST(Mortar3DQuadratic, NonConvexMasterIsTwoTriangles) {
   const double g = 0.1;
   const Q9 slave = quad9(0.0, 0.0, 2.0, 2.0, 0.0);
   const Q4 dart{{{0.2, 1.8, g}, {0.8, 0.8, g}, {1.8, 0.2, g}, {0.2, 0.2, g}}};  // facing the slave
-  const auto r = integrateQuadraticSegment3D<FaceType::Quad9, FaceType::Quad4, double>(slave, up(), dart, 1e-12);
+  const auto r = integrateQuadraticSegment3D<FaceType::Quad9, FaceType::Quad4, double>(slave, test::up<FaceType::Quad9>(), dart, 1e-12);
   test::expectPatchIdentities(r, 9, g, 0.96);
 }
 
 
 TEST(Mortar3DQuadraticLinearization, CurvedQuad9Faces) {
-  Q9 ns = up();
-  for (int k = 0; k < 9; ++k) {
-    const double tilt = 0.05 * (k % 3) - 0.04 * (k / 3);
-    const double n = std::sqrt(1 + 2 * tilt * tilt);
-    ns[k] = {tilt / n, -tilt / n, 1 / n};
-  }
+  const Q9 ns = test::tilted<FaceType::Quad9>();
   test::checkQuadraticSegmentDerivatives<FaceType::Quad9, FaceType::Quad9>(quad9(0.0, 0.0, 2.0, 2.0, 0.0, 0.08, 0.1), ns,
                                                       reversed(quad9(0.6, -0.5, 2.2, 1.9, 0.15, -0.05)));
   const Q4 master{{{0.6, -0.5, 0.15}, {0.7, 1.4, 0.12}, {2.8, 1.4, 0.2}, {2.8, -0.5, 0.1}}};

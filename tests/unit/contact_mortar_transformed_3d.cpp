@@ -8,6 +8,7 @@
 
 #include <cmath>
 
+#include "QuadraticFaces.hpp"
 #include "QuadraticSegmentChecks.hpp"
 #include "coulomb/contact/mortar/MortarSegmentQuadratic3D.hpp"
 
@@ -15,47 +16,16 @@ namespace coulomb::contact {
 namespace {
 
 using mesh::FaceType;
-using Q8 = FaceNodes<FaceType::Quad8, double>;
-using T6 = FaceNodes<FaceType::Tri6, double>;
+using test::Q8;
+using test::T6;
 using Q4 = FaceNodes<FaceType::Quad4, double>;
 using T3 = FaceNodes<FaceType::Tri3, double>;
+using test::quad8;
+using test::reversed;
+using test::tri6;
+using test::up;
+using test::tilted;
 constexpr double kAlpha = kTransformedBasisAlpha;
-
-/// The Quad8 of the rectangle [x0, x0 + a] x [y0, y0 + b] at height z
-/// (`bow` lifts the mid-sides, `skew` shears x by y), normal +z.
-Q8 quad8(double x0, double y0, double a, double b, double z, double bow = 0.0, double skew = 0.0) {
-  Q8 x{};
-  for (int k = 0; k < 8; ++k) {
-    const double s = kQuad9Node[k][0], t = kQuad9Node[k][1];
-    x[k] = {x0 + a * (s + 1) / 2 + skew * (t + 1) / 2, y0 + b * (t + 1) / 2, z + (k < 4 ? 0.0 : 0.5 * bow)};
-  }
-  return x;
-}
-/// The same face seen from a body facing it (orientation reversed).
-Q8 reversed(const Q8& x) { return {x[0], x[3], x[2], x[1], x[7], x[6], x[5], x[4]}; }
-
-/// The Tri6 of the triangle p0 p1 p2 at height z, normal +z for a
-/// counter-clockwise p; `bow` lifts the mid-sides.
-T6 tri6(std::array<double, 2> p0, std::array<double, 2> p1, std::array<double, 2> p2, double z, double bow = 0.0) {
-  const std::array<std::array<double, 2>, 3> p{p0, p1, p2};
-  T6 x{};
-  for (int c = 0; c < 3; ++c) x[c] = {p[c][0], p[c][1], z};
-  for (int e = 0; e < 3; ++e) {
-    const auto& a = p[kTri6Edge[e][1]];
-    const auto& b = p[kTri6Edge[e][2]];
-    x[kTri6Edge[e][0]] = {(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, z + bow};
-  }
-  return x;
-}
-T6 reversed(const T6& x) { return {x[0], x[2], x[1], x[5], x[4], x[3]}; }
-
-template <FaceType F>
-FaceNodes<F, double> up() {
-  FaceNodes<F, double> n{};
-  for (auto& v : n) v = {0.0, 0.0, 1.0};
-  return n;
-}
-
 
 /// A = D_e M_e^-1: int Phi_j N~_k = delta_jk D_e[j].
 template <FaceType F>
@@ -144,18 +114,6 @@ TEST(Mortar3DTransformed, PlaneParallelFacesGiveThePatchIdentities) {
   for (int j = 0; j < 4; ++j) EXPECT_NEAR(onTri.D[j], 0.25, 1e-12) << j;
 }
 
-
-/// Slightly tilted nodal normals.
-template <FaceType F>
-FaceNodes<F, double> tilted() {
-  FaceNodes<F, double> ns{};
-  for (int k = 0; k < FaceTraits<F>::nodes; ++k) {
-    const double tilt = 0.05 * (k % 3) - 0.04 * (k / 3);
-    const double n = std::sqrt(1 + 2 * tilt * tilt);
-    ns[k] = {tilt / n, -tilt / n, 1 / n};
-  }
-  return ns;
-}
 
 TEST(Mortar3DTransformedLinearization, CurvedQuad8AndTri6Faces) {
   test::checkQuadraticSegmentDerivatives<FaceType::Quad8, FaceType::Quad8>(quad8(0.0, 0.0, 2.0, 2.0, 0.0, 0.08, 0.1), tilted<FaceType::Quad8>(),

@@ -78,12 +78,15 @@ TEST(ContactPatch, QuadraticLine3FacesAxisymmetric) {
 // unstructured master faces, transformed too), all segmented on sub-facets
 // (MortarSegmentQuadratic3D.hpp): the uniaxial stress E delta, u_z = -delta
 // z, u_x = nu delta x, u_y = nu delta y to round-off, every slave node (81,
-// 65, 81: corners, mid-sides and centres) at the same pressure; and HEX20
+// 65, 81: corners, mid-sides and centres) at the same pressure; HEX20
 // on matching meshes (3 x 3 on 3 x 3, 40 slave nodes: every slave edge on a
-// master edge).
+// master edge); and mixed meshes (contact_patch3d.geo's tetbase / tetpunch):
+// a HEX27 punch on a TET10 base (QUAD9 slave on TRI6 master), a TET10 punch
+// on a HEX27 base (TRI6 on QUAD9), a HEX20 punch on a TET10 base (QUAD8 on TRI6).
 TEST(ContactPatch, Quadratic3DFacesTransmitUniformPressure) {
   for (const auto& [cells, slaveNodes] :
-       {std::pair<std::string, int>{"hex27", 81}, {"hex20", 65}, {"tet10", 81}, {"matching_hex20", 40}}) {
+       {std::pair<std::string, int>{"hex27", 81}, {"hex20", 65}, {"tet10", 81}, {"matching_hex20", 40},
+        {"hex27_on_tet10", 81}, {"tet10_on_hex27", 81}, {"hex20_on_tet10", 65}}) {
     SCOPED_TRACE(cells);
     ShippedDeck deck("contact_patch_3d", "contact_patch3d.e");
     deck.replace(shippedMesh("contact_patch3d.e"), shippedMesh("contact_patch3d_" + cells + ".e"));

@@ -110,22 +110,6 @@ ContactPair::ContactPair(const mesh::Mesh& mesh, const Teuchos::RCP<const Map>& 
     }
   }
   slaveTransform_ = std::make_unique<SlaveTransform>(*interface_, prescribed_, what);
-  {
-    // The sub-facet kernel pairs a Quad9 with linear faces and Quad9s, and a
-    // Quad8 / Tri6 with linear faces, Quad8s and Tri6s (MortarSegmentQuadratic3D).
-    auto kinds = [](const std::vector<ContactFace>& faces) {
-      std::pair<bool, bool> k{false, false};  // (Quad9, Quad8 or Tri6)
-      for (const ContactFace& f : faces) {
-        k.first = k.first || f.type == mesh::FaceType::Quad9;
-        k.second = k.second || f.type == mesh::FaceType::Quad8 || f.type == mesh::FaceType::Tri6;
-      }
-      return k;
-    };
-    const auto slave = kinds(interface_->slaveFaces()), master = kinds(interface_->masterFaces());
-    COULOMB_REQUIRE(!((slave.first && master.second) || (slave.second && master.first)),
-                    what << ": QUAD9 faces on one side and QUAD8 or TRI6 faces on the other cannot be paired (mesh "
-                            "both bodies with the same kind of quadratic cells, HEX27 or HEX20/TET10)");
-  }
   const std::size_t owned = interface_->ownedSlaveNodes().size();
   // eps_n per owned slave node: the deck's value, or the automatic one.
   penalty_.assign(owned, settings.penalty);

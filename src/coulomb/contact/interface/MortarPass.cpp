@@ -186,16 +186,12 @@ void pair2D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
 }
 
 /// A 3D pair: the linear kernel, or the sub-facet one when a face is
-/// quadratic (MortarSegmentQuadratic3D.hpp). The sub-facet kernel has
-/// Quad9 with Tri3, Quad4, Quad9, and Quad8 / Tri6 with Tri3, Quad4, Quad8,
-/// Tri6 (ContactPair refuses a pair mixing Quad9 with Quad8 or Tri6).
+/// quadratic (MortarSegmentQuadratic3D.hpp; any quadratic type with any other).
 template <FaceType S, FaceType Mf>
 void pair3D(const PairContext& p, const ContactFace& s, const ContactFace& m) {
-  constexpr bool quad9 = S == FaceType::Quad9 || Mf == FaceType::Quad9;
-  constexpr bool transformed = transformedSlaveBasis(S) || transformedSlaveBasis(Mf);
-  if constexpr (quad9 && transformed)
-    throw Error("mortar integration: a QUAD9 face with a QUAD8 or TRI6 face");
-  else if constexpr (quad9 || transformed)
+  constexpr bool quadratic = S == FaceType::Quad9 || Mf == FaceType::Quad9 || transformedSlaveBasis(S) ||
+                             transformedSlaveBasis(Mf);
+  if constexpr (quadratic)
     integrateWith<S, Mf>(
         p, s, m,
         [&](const auto& xs, const auto& ns, const auto& xm) {

@@ -225,7 +225,9 @@ using FadInputs33 = Sacado::Fad::SFad<double, 33>;
 using FadInputs36 = Sacado::Fad::SFad<double, 36>;
 using FadInputs39 = Sacado::Fad::SFad<double, 39>;
 using FadInputs42 = Sacado::Fad::SFad<double, 42>;
+using FadInputs45 = Sacado::Fad::SFad<double, 45>;
 using FadInputs48 = Sacado::Fad::SFad<double, 48>;
+using FadInputs51 = Sacado::Fad::SFad<double, 51>;
 using FadInputs54 = Sacado::Fad::SFad<double, 54>;
 COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, FadInputs54)  // Quad9 / Quad9
 COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, FadInputs39)  // Quad9 / Quad4
@@ -241,6 +243,10 @@ COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs36)   // Tri6 / Tri6
 COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs42)   // Tri6 / Quad8
 COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs30)   // Tri6 / Quad4
 COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs27)   // Tri6 / Tri3
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, FadInputs51)  // Quad9 / Quad8
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad9, FadInputs45)  // Quad9 / Tri6
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Quad8, FadInputs51)  // Quad8 / Quad9
+COULOMB_CONTACT_DUAL_INSTANTIATE(FaceType::Tri6, FadInputs45)   // Tri6 / Quad9
 #undef COULOMB_CONTACT_DUAL_ALL_FACES
 #undef COULOMB_CONTACT_DUAL_INSTANTIATE
 

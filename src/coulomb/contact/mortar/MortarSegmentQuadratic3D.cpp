@@ -429,6 +429,12 @@ COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad4, FaceType::Quad8)
 COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad4, FaceType::Tri6)
 COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Tri3, FaceType::Quad8)
 COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Tri3, FaceType::Tri6)
+// Quad9 with Quad8 and Tri6 (a HEX27 body on a HEX20 or TET10 one): the
+// master side takes its standard shape functions whatever its type.
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad9, FaceType::Quad8)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad9, FaceType::Tri6)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Quad8, FaceType::Quad9)
+COULOMB_QUADRATIC_3D_INSTANTIATE(FaceType::Tri6, FaceType::Quad9)
 #undef COULOMB_QUADRATIC_3D_INSTANTIATE
 
 }  // namespace coulomb::contact

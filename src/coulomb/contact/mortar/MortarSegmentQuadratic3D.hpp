@@ -11,8 +11,10 @@
 /// at the corners; their dual basis is built on the transformed basis N~
 /// (DualBasis.hpp, faceTrialValues), so D_j = int N~_j > 0, and the pair's
 /// rows are carried between the transformed and the physical slave nodes by
-/// SlaveTransform.hpp. Pairs of a Quad9 with a Quad8 or Tri6 are not
-/// instantiated (ContactInterface's surfaces take one kind).
+/// SlaveTransform.hpp. The master side always takes its standard shape
+/// functions N^2_l, so any slave type pairs with any master type (a HEX27
+/// body on a TET10 one); a slave surface takes one kind of quadratic face
+/// (Quad9, or Quad8 / Tri6: SlaveTransform.hpp).
 ///
 /// Segmentation (Puso and Laursen's sub-facets, as in the dual quadratic
 /// mortar of Popp, Wohlmuth, Gee and Wall): a Quad9 is split into its four
@@ -34,8 +36,8 @@
 
 namespace coulomb::contact {
 
-/// @brief Integrates one pair (S or Mf a Quad9 and the other Tri3, Quad4 or
-/// Quad9; or S or Mf a Quad8 / Tri6 and the other Tri3, Quad4, Quad8 or Tri6).
+/// @brief Integrates one pair (S or Mf quadratic: Quad9, Quad8 or Tri6; the
+/// other any of Tri3, Quad4, Tri6, Quad8, Quad9).
 template <mesh::FaceType S, mesh::FaceType Mf, typename T>
 MortarSegment3D<S, Mf, T> integrateQuadraticSegment3D(const FaceNodes<S, T>& xs, const FaceNodes<S, T>& ns,
                                                       const FaceNodes<Mf, T>& xm, double relativeTolerance);

@@ -228,14 +228,19 @@ COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DTriQuad)
 COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DQuadTri)
 COULOMB_CONTACT_CLIP_INSTANTIATE(Fad3DQuadQuad)
 // MortarSegmentQuadratic3D (SubFacetFad3D: 3 x the nodes of both faces),
-// the counts not above (27 to 36): Quad9/Quad9 54, Quad8/Quad8 48,
-// Quad8/Tri6 and Tri6/Quad8 42, Quad9/Quad4 and Quad4/Quad9 39.
+// the counts not above (27 to 36): Quad9/Quad9 54, Quad9/Quad8 and
+// Quad8/Quad9 51, Quad8/Quad8 48, Quad9/Tri6 and Tri6/Quad9 45, Quad8/Tri6
+// and Tri6/Quad8 42, Quad9/Quad4 and Quad4/Quad9 39.
 using FadInputs54 = Sacado::Fad::SFad<double, 54>;
 COULOMB_CONTACT_CLIP_INSTANTIATE(FadInputs54)
+using FadInputs51 = Sacado::Fad::SFad<double, 51>;
+COULOMB_CONTACT_CLIP_INSTANTIATE(FadInputs51)
 using FadInputs48 = Sacado::Fad::SFad<double, 48>;
 COULOMB_CONTACT_CLIP_INSTANTIATE(FadInputs48)
 using FadInputs42 = Sacado::Fad::SFad<double, 42>;
 COULOMB_CONTACT_CLIP_INSTANTIATE(FadInputs42)
+using FadInputs45 = Sacado::Fad::SFad<double, 45>;
+COULOMB_CONTACT_CLIP_INSTANTIATE(FadInputs45)
 using FadInputs39 = Sacado::Fad::SFad<double, 39>;
 COULOMB_CONTACT_CLIP_INSTANTIATE(FadInputs39)
 #undef COULOMB_CONTACT_CLIP_INSTANTIATE
