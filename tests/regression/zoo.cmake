@@ -57,3 +57,17 @@ foreach(name dissimilar_patch_2d incline_block_2d_mu02 pull_out_2d stacked_block
     endforeach()
   endforeach()
 endforeach()
+
+# The sliding sphere on HEX20 cells, coarse (h = 0.5: 15897 DoFs, about two
+# minutes): a slab node outside the die's rim, a sliver of its support under
+# the die, entered and left the contact set at every iterate (g~/D = -7.9 mm
+# where the gap is 2 mm) until the step failed after five cutbacks, before
+# such nodes stopped counting as contact nodes (ContactPair::contactWeight,
+# docs/architecture.md "Coverage").
+foreach(np 1 2)
+  add_test(NAME Zoo.sliding_sphere_3d.order2s_coarse.np${np}
+           COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/tests/zoo/run_zoo.py --exe ${COULOMB_EXE}
+                   --np ${np} --cases sliding_sphere_3d --order 2 --serendipity --setnumber h 0.5
+                   --out ${CMAKE_CURRENT_BINARY_DIR}/zoo_order2s_coarse/np${np})
+  set_tests_properties(Zoo.sliding_sphere_3d.order2s_coarse.np${np} PROPERTIES TIMEOUT 900 PROCESSORS ${np} LABELS zoo)
+endforeach()

@@ -3,7 +3,7 @@
 
     /usr/bin/python3 tests/zoo/run_zoo.py [--exe PATH] [--np N] [--cases a,b,...] [--out DIR]
                                           [--markdown] [--mu-sweep] [--timeout S]
-                                          [--order 2 [--serendipity]]
+                                          [--order 2 [--serendipity] [--setnumber NAME VALUE ...]]
 
 Every tests/zoo/<case>.json (keys: geo, mesh_args, dim, check, expected) is a case
 with the deck tests/zoo/<case>.xml. For each case the runner
@@ -26,7 +26,9 @@ per case to OUT/zoo.jsonl. Exit code 0 when every case converged and passed.
 --order 2 meshes every case at order 2 into OUT/meshes/<case>_order2.e
 (QUAD9 / TRI6 / HEX27 / TET10 cells; with --serendipity QUAD8 / HEX20,
 <case>_order2s.e) and runs the unchanged deck on it (`coulomb deck -m mesh`):
-the same problems on quadratic cells, with the defaults.
+the same problems on quadratic cells, with the defaults. --setnumber NAME VALUE
+(repeatable, order 2 only) overrides a mesh parameter of the .geo (e.g. the
+element size h, for a coarser quadratic mesh).
 
 --mu-sweep runs xml/friction_punch.xml with the contact friction coefficient
 replaced by 0.1, 0.3, 0.5, 0.7, 0.9 and 1.0 (copies of the deck in OUT, its
@@ -128,6 +130,8 @@ def make_mesh(case, spec, build_dir, args=None):
     if args is not None and args.order == 2:
         mesh = os.path.join(args.out, "meshes", case + ("_order2s.e" if args.serendipity else "_order2.e"))
         extra = ["-order", "2"] + (["-string", "Mesh.SecondOrderIncomplete=1;"] if args.serendipity else [])
+        for name, value in args.setnumber:
+            extra += ["-setnumber", name, value]
         return run_make_mesh(geo, mesh, list(spec.get("mesh_args", [])) + extra, build_dir)
     mesh = os.path.join(HERE, "meshes", case + ".e")
     sources = [geo, os.path.join(HERE, case + ".json")]
@@ -352,9 +356,11 @@ def main():
     ap.add_argument("--order", type=int, choices=(1, 2), default=1,
                     help="2: every case meshed at order 2 into OUT/meshes (quadratic cells)")
     ap.add_argument("--serendipity", action="store_true", help="with --order 2: QUAD8 / HEX20 cells")
+    ap.add_argument("--setnumber", nargs=2, action="append", default=[], metavar=("NAME", "VALUE"),
+                    help="with --order 2: a mesh parameter of the .geo, after the case's own")
     args = ap.parse_args()
-    if args.serendipity and args.order != 2:
-        print("run_zoo: --serendipity needs --order 2", file=sys.stderr)
+    if (args.serendipity or args.setnumber) and args.order != 2:
+        print("run_zoo: --serendipity and --setnumber need --order 2", file=sys.stderr)
         return 2
     args.exe = os.path.abspath(args.exe)
     args.out = os.path.abspath(args.out)

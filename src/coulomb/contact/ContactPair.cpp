@@ -343,7 +343,7 @@ SlaveNode ContactPair::slaveNode(std::size_t i, bool derivatives) {
   n.slave = interface_->ownedSlaveNodes()[i];
   n.node = interface_->slaveNodes()[n.slave];
   const NodalMortarEntry* entry = mortar_.find(n.node);
-  n.mortar = entry != nullptr && entry->D > minimumD_ ? entry : nullptr;
+  n.mortar = entry != nullptr && contactWeight(*entry) ? entry : nullptr;
   n.normal = &normals_[n.slave];
   if (derivatives) {
     n.mortarDerivative = mortarDerivatives_.find(n.node);

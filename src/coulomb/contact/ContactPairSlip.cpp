@@ -15,7 +15,16 @@ namespace {
 /// the master: covered nodes deviate by up to 6e-5, partly covered ones by
 /// 1e-2 to 1e-1 (docs/architecture.md, "Coverage").
 constexpr double kCoverageTolerance = 1e-3;
+/// D_j / int N_j below which a node's support lies mostly off the master and
+/// the node is no contact node (ContactPair::contactWeight).
+constexpr double kMinimumCoverage = 0.05;
 }  // namespace
+
+bool ContactPair::contactWeight(const NodalMortarEntry& entry) const {
+  if (!(entry.D > minimumD_)) return false;
+  const double support = nodalSupportMeasure(*interface_, x_, interface_->slaveNodeIndex(entry.node));
+  return entry.D >= kMinimumCoverage * support;
+}
 
 bool ContactPair::coveredByMaster(const NodalMortarEntry& entry, const InterfaceConfiguration& x) const {
   const double support = nodalSupportMeasure(*interface_, x, interface_->slaveNodeIndex(entry.node));
