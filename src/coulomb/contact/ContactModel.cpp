@@ -89,7 +89,7 @@ void ContactModel::restoreStep() {
 
 template <class UpdatePair>
 void ContactModel::updatePairs(bool freezeSet, UpdatePair&& updatePair) {
-  contributions_ = ContactContributions();
+  clear(contributions_);
   summary_ = ContactIterationSummary();
   PairIterationSummary total;
   std::vector<std::size_t> order(pairs_.size());
@@ -181,7 +181,8 @@ Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMat
   // matrix product: every entry of T - I sits in a column of a slave node's
   // DoF, emitted by the rank that owns that node (ContactPair::update), which
   // also owns the node's rows of K and emitted its rows of K_c.
-  std::vector<linalg::MatrixTriplet> interfaceRows = contributions_.contactStiffness;
+  std::vector<linalg::MatrixTriplet>& interfaceRows = interfaceRows_;  // its memory kept from the last iterate
+  interfaceRows.assign(contributions_.contactStiffness.begin(), contributions_.contactStiffness.end());
   interfaceRows.insert(interfaceRows.end(), contributions_.constraint.begin(), contributions_.constraint.end());
   std::unordered_map<GlobalOrdinal, std::vector<std::pair<GlobalOrdinal, double>>> stiffnessRows;
   for (const auto& t : contributions_.contactStiffness) stiffnessRows[t.row].push_back({t.column, t.value});
