@@ -7,7 +7,9 @@ Last written step (the deck's comment gives the derivation and tolerances):
   value     T = |sum over `top` of x R_y - y R_x| (torque of the reactions)
   expected  mu sum_j p_j r_j A_j over the slave nodes (contact_pressure p_j,
             r_j the distance to the z axis, A_j = integral of the node's
-            shape function over the slave faces: HEX8, HEX20 or HEX27 cells)
+            shape function over the slave faces: HEX8, HEX20 or HEX27 cells;
+            on HEX20's QUAD8 faces the transformed shape function and the
+            transformed position, where the node's contact force acts)
             tolerance 1e-3
   condition T against Lubkin on the meshed disc, mu P int(r dA) / A
             (P = -reaction_top_z, = (2/3) mu P a on the exact disc), 1.5 %
@@ -100,9 +102,43 @@ def shape(count, xi, eta):
     return N, dx, de
 
 
+# QUAD8 slave faces take the transformed basis (src/coulomb/contact/mortar/
+# DualBasis.hpp): N~_c = N_c + ALPHA (N_e + N_e') at a corner, N~_e = (1 -
+# 2 ALPHA) N_e at a side node; a node's contact force D_j p_j then acts at its
+# transformed position x~_j (x~_e = (x_e - ALPHA (x_a + x_b)) / (1 - 2 ALPHA)
+# on side e = (a, b), x~_c = x_c): sum_i x_i x f_i = sum_j x~_j x F~_j for
+# f = T^-T F~, x = T x~.
+ALPHA = 0.2
+
+
+def trial(N, count):
+    """the shape functions a node's multiplier force is weighted with: N itself,
+    or for QUAD8 the transformed N~"""
+    if count != 8:
+        return N
+    Nt = list(N)
+    for k in range(4):  # side k joins corners k and k + 1
+        Nt[4 + k] = (1 - 2 * ALPHA) * N[4 + k]
+        Nt[k] += ALPHA * (N[4 + k] + N[4 + (k + 3) % 4])
+    return Nt
+
+
+def action_points(xyz, faces):
+    """per node its point of action: x~_e for a QUAD8 side node, else x"""
+    points = {}
+    for face in faces:
+        for k, v in enumerate(face):
+            if len(face) == 8 and k >= 4:
+                a, b = face[k - 4], face[(k - 3) % 4]
+                points[v] = (xyz[v] - ALPHA * (xyz[a] + xyz[b])) / (1 - 2 * ALPHA)
+            else:
+                points.setdefault(v, xyz[v])
+    return points
+
+
 def face_integrals(xyz, faces):
-    """A_j = int N_j dA per node, and int dA, int r dA over the faces (4 x 4 Gauss,
-    the faces' own shape functions: QUAD4, QUAD8 or QUAD9)"""
+    """A_j = int N_j dA per node (N~_j on QUAD8 faces), and int dA, int r dA over
+    the faces (4 x 4 Gauss, the faces' own shape functions: QUAD4, QUAD8 or QUAD9)"""
     import numpy as np
     area = {}
     total, moment = 0.0, 0.0
@@ -116,7 +152,7 @@ def face_integrals(xyz, faces):
                 total += J
                 moment += J * math.hypot(p[0], p[1])
                 for k, v in enumerate(face):
-                    area[v] = area.get(v, 0.0) + N[k] * J
+                    area[v] = area.get(v, 0.0) + trial(N, len(face))[k] * J
     return area, total, moment
 
 
@@ -138,8 +174,9 @@ if not faces:
 A, area, moment = face_integrals(X, faces)
 
 T = abs(sum(X[i, 0] * Ry[i] - X[i, 1] * Rx[i] for i in top))
-T_friction = MU * sum(p[j] * math.hypot(X[j, 0], X[j, 1]) * A[j] for j in slave)
-T_traction = abs(sum(A[j] * (X[j, 0] * ty[j] - X[j, 1] * tx[j]) for j in slave))
+Xa = action_points(X, faces)
+T_friction = MU * sum(p[j] * math.hypot(Xa[j][0], Xa[j][1]) * A[j] for j in slave)
+T_traction = abs(sum(A[j] * (Xa[j][0] * ty[j] - Xa[j][1] * tx[j]) for j in slave))
 P_contact = sum(p[j] * A[j] for j in slave)
 lubkin_mesh = MU * P * moment / area
 lubkin_disc = 2.0 / 3.0 * MU * P * A_RADIUS
