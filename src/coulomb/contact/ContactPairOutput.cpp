@@ -76,7 +76,9 @@ std::vector<ContactPair::NodeOutput> ContactPair::nodeOutput() const {
     if (const NodalMortarEntry* entry = mortar_.find(o.node)) {
       o.weightedGap = entry->gap;
       o.area = entry->D;
-      o.gap = entry->D > minimumD_ ? entry->gap / entry->D : 0.0;
+      // No gap where the node is no contact node (contactWeight: g~ / D of a
+      // sliver of overlap is no gap).
+      o.gap = contactWeight(*entry) ? entry->gap / entry->D : 0.0;
     }
     if (static_cast<std::size_t>(owned[i]) < normals_.size()) o.normal = normals_[owned[i]].n;
     for (int c = 0; c < 3; ++c) o.multiplier[c] = node.lambdaN * o.normal[c];
