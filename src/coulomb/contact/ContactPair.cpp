@@ -149,7 +149,6 @@ void ContactPair::beginStep(int deckStep) {
   stepStartMortar_ = mortar_;
   stepStartX_ = x_.x.empty() ? referenceConfiguration(*interface_) : x_;
   stepStartCovered_.clear();
-  uncoveredInStep_.assign(interface_->slaveNodes().size(), 0);
   if (settings_.slipMeasure == SlipMeasure::Objective)
     for (const auto& entry : stepStartMortar_.entries) stepStartCovered_.push_back(coveredByMaster(entry, stepStartX_));
   // The direction of Slip Reset Frequency < 0: the converged slip of the

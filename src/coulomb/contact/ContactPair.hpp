@@ -187,10 +187,6 @@ private:
   /// Per stepStartMortar_ entry: its node's support lay on the master at the
   /// step start (coveredByMaster; the objective slip needs it, weightedSlip).
   std::vector<char> stepStartCovered_;
-  /// Per slave node (slaveNodes() order): its support was found off the
-  /// master at an iterate of this step, so its slip stays non-objective
-  /// until the step ends (weightedSlip; cleared by beginStep).
-  mutable std::vector<char> uncoveredInStep_;
   std::vector<std::array<double, 3>> accumulatedSlip_;
   /// The weighted slip of the last converged step (the slip direction of
   /// Slip Reset Frequency < 0); kept through a restoreStep().

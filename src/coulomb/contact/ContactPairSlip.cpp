@@ -44,19 +44,9 @@ std::array<double, 3> ContactPair::weightedSlip(const NodalMortarEntry& entry,
   // And only where the node's support lies on the master now and at the
   // step start: the moving edge of a partial overlap counts as slip in the
   // objective form (docs/architecture.md, "Coverage").
-  // A node found off the master once in the step stays so for the rest of
-  // it: rim nodes whose coverage sits at the tolerance (pressed_torsion_3d on
-  // HEX20: |D_j - int N_j| / int N_j between 0.9e-3 and 1.1e-3 on the
-  // rotated rim) otherwise switched between the two slip forms at every
-  // iterate, and Newton stalled in a 2-cycle the sets do not show.
-  std::size_t slave = static_cast<std::size_t>(interface_->slaveNodeIndex(entry.node));
   bool objective = settings_.slipMeasure == SlipMeasure::Objective && previous != nullptr &&
                    stepStartCovered_[static_cast<std::size_t>(previous - stepStartMortar_.entries.data())] &&
-                   !uncoveredInStep_[slave];
-  if (objective && !coveredByMaster(entry, x_)) {
-    objective = false;
-    uncoveredInStep_[slave] = 1;
-  }
+                   coveredByMaster(entry, x_);
   if (objective && settings_.operatorThreshold > 0.0) {
     // Relative change of D_j and the M_jl over the step (the seed's OPERATOR_THRESHOLD).
     double change = std::abs(entry.D - previous->D), size = std::abs(entry.D);
