@@ -1,5 +1,6 @@
 #include "coulomb/contact/ContactPair.hpp"
 #include "coulomb/contact/interface/InterfaceBalance.hpp"
+#include "coulomb/contact/interface/NodalSupport.hpp"
 #include "coulomb/contact/interface/SelfContactRoles.hpp"
 #include "coulomb/contact/SlaveTransform.hpp"
 
@@ -148,9 +149,10 @@ void ContactPair::beginStep(int deckStep) {
   // operators and coordinates are the D^t, M^t, x^t of the slip (4.69).
   stepStartMortar_ = mortar_;
   stepStartX_ = x_.x.empty() ? referenceConfiguration(*interface_) : x_;
-  stepStartCovered_.clear();
+  stepStartSupport_ = support_;
+  stepStartWeight_.clear();
   if (settings_.slipMeasure == SlipMeasure::Objective)
-    for (const auto& entry : stepStartMortar_.entries) stepStartCovered_.push_back(coveredByMaster(entry, stepStartX_));
+    for (const auto& entry : mortar_.entries) stepStartWeight_.push_back(objectiveWeight(entry, nullptr));
   // The direction of Slip Reset Frequency < 0: the converged slip of the
   // nodes that slipped (a sticking node's slip is round-off, an open one's
   // its approach); a retry keeps that of the converged step.
@@ -176,6 +178,7 @@ void ContactPair::restoreStep() {
   // the previous step, not the failed iterate (the slip's Dᵗ, Mᵗ, xᵗ).
   nodes_ = stepStart_;
   mortar_ = stepStartMortar_;
+  support_ = stepStartSupport_;
   x_ = stepStartX_;
   searched_ = false;
   restored_ = true;
@@ -294,6 +297,7 @@ void ContactPair::integrateCurrentConfiguration() {
   }
   throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
   mortar_ = sumToOwners(*interface_, local);
+  support_ = nodalSupportMeasures(*interface_, x_, mortar_.entries);
 }
 
 void ContactPair::differentiate(const std::vector<char>& ownedFlags) {

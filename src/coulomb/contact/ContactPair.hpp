@@ -106,11 +106,17 @@ private:
   void searchAndIntegrate(const Vector& u);
   /// searchAndIntegrate at x_ (the search when due, the normals, D, M, g~).
   void integrateCurrentConfiguration();
-  /// The support of entry's node lies wholly on the master in configuration x
-  /// (|D_j - int N_j| <= 1e-3 int N_j, ContactPairSlip.cpp).
-  bool coveredByMaster(const NodalMortarEntry& entry, const InterfaceConfiguration& x) const;
-  /// Whether entry's node is a contact node at x_: D_j above the round-off
-  /// (minimumD_) and at least 5 % of int N_j over its support. The dual basis
+  /// The weight of the objective slip form of entry's node at x_ from its
+  /// coverage, the deviation |D_j - S_j| / S_j (S_j its D_j under a covering
+  /// master, nodalSupportMeasures, support_): 1 up to 2.5e-4 (its support lies
+  /// on the master), 0 from 1e-3 (partly off it), smooth between; and its
+  /// derivative d weight / dx where it is neither 0 nor 1 (entry with
+  /// derivatives; ContactPairSlip.cpp).
+  double objectiveWeight(const NodalMortarEntry& entry, DerivativeRow* derivative) const;
+  /// S_j of a node with an entry in mortar_ (support_).
+  double supportMeasure(long long node) const;
+  /// Whether entry's node (of mortar_) is a contact node at x_: D_j above the
+  /// round-off (minimumD_) and at least 5 % of S_j. The dual basis
   /// is biorthogonal on the whole support only (Cichosz and Bischoff 2011):
   /// on a support mostly off the master, g~_j / D_j is a mean of the gap
   /// with large negative weights, no gap (sliding_sphere_3d on HEX20: a node
@@ -174,6 +180,8 @@ private:
   InterfaceConfiguration x_;          ///< current interface coordinates (last update)
   std::vector<NodalNormal> normals_;  ///< by slave node index, values
   NodalMortarQuantities mortar_;      ///< owned slave nodes, values
+  /// Per mortar_ entry: its D_j under a covering master at x_ (nodalSupportMeasures).
+  std::vector<double> support_;
   /// The same with derivatives, for the nodes stage 2 needs.
   std::vector<NodalNormal> normalDerivatives_;
   NodalMortarQuantities mortarDerivatives_;
@@ -184,9 +192,10 @@ private:
   // accumulated over the steps before this one.
   NodalMortarQuantities stepStartMortar_;
   InterfaceConfiguration stepStartX_;
-  /// Per stepStartMortar_ entry: its node's support lay on the master at the
-  /// step start (coveredByMaster; the objective slip needs it, weightedSlip).
-  std::vector<char> stepStartCovered_;
+  /// Per stepStartMortar_ entry: objectiveWeight at the step start (the
+  /// objective slip needs the support on the master then, weightedSlip).
+  std::vector<double> stepStartWeight_;
+  std::vector<double> stepStartSupport_;  ///< support_ of stepStartMortar_
   std::vector<std::array<double, 3>> accumulatedSlip_;
   /// The weighted slip of the last converged step (the slip direction of
   /// Slip Reset Frequency < 0); kept through a restoreStep().

@@ -286,32 +286,6 @@ NodalMortarQuantities integrateMortarPass(const ContactInterface& contact, const
   return result;
 }
 
-double nodalSupportMeasure(const ContactInterface& contact, const InterfaceConfiguration& x, int slaveNode) {
-  const auto& offset = contact.slaveNodeFaceOffsets();
-  double measure = 0.0;
-  for (int k = offset[slaveNode]; k < offset[slaveNode + 1]; ++k) {
-    const ContactFace& f = contact.slaveFaces()[contact.slaveNodeFaces()[k]];
-    const int corner = contact.slaveNodeFaceCorners()[k];
-    if (f.type == FaceType::Line3)
-      measure += lineMass<FaceType::Line3, double>(faceCoordinates<FaceType::Line3>(f, x), contact.axisymmetric()).De[corner];
-    else if (f.type == FaceType::Line2 && contact.axisymmetric())
-      measure += ringMass<double>(faceCoordinates<FaceType::Line2>(f, x)).De[corner];
-    else if (f.type == FaceType::Line2)
-      measure += faceMass<FaceType::Line2, double>(faceCoordinates<FaceType::Line2>(f, x)).De[corner];
-    else if (f.type == FaceType::Quad9)
-      measure += faceMass<FaceType::Quad9, double>(faceCoordinates<FaceType::Quad9>(f, x)).De[corner];
-    else if (f.type == FaceType::Quad8)  // int N~_j: the transformed basis D_j is dual to
-      measure += faceMass<FaceType::Quad8, double>(faceCoordinates<FaceType::Quad8>(f, x)).De[corner];
-    else if (f.type == FaceType::Tri6)
-      measure += faceMass<FaceType::Tri6, double>(faceCoordinates<FaceType::Tri6>(f, x)).De[corner];
-    else if (f.type == FaceType::Tri3)
-      measure += faceMass<FaceType::Tri3, double>(faceCoordinates<FaceType::Tri3>(f, x)).De[corner];
-    else
-      measure += faceMass<FaceType::Quad4, double>(faceCoordinates<FaceType::Quad4>(f, x)).De[corner];
-  }
-  return measure;
-}
-
 // ------------------------------------------------------------ summation
 
 namespace {

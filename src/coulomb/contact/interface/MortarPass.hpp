@@ -80,13 +80,6 @@ NodalMortarQuantities integrateMortarPass(const ContactInterface& contact, const
                                           const std::vector<NodalNormal>& normals, const SearchResult& pairs,
                                           bool withDerivatives, double relativeTolerance = 1e-12);
 
-/// @brief The integral of the shape function of slave node `slaveNode` (an
-/// index into ContactInterface::slaveNodes()) over its slave faces in the
-/// configuration x: int N_j dA. The D_j of a node whose support lies wholly
-/// on the master equals it (int Phi_j = int N_j face by face, the dual
-/// basis' biorthogonality with sum_k N_k = 1); a smaller or larger D_j says
-/// part of the support is off the master. Not collective.
-double nodalSupportMeasure(const ContactInterface& contact, const InterfaceConfiguration& x, int slaveNode);
 
 /// @brief Collective: sums the partial quantities of all ranks on the owner of
 /// each slave node. Returns the entries of the owned slave nodes that received a

@@ -1,0 +1,142 @@
+/// @file NodalSupport.cpp
+/// @brief S_j, the D_j of a slave node under a covering master (see the header).
+#include "coulomb/contact/interface/NodalSupport.hpp"
+
+#include <cmath>
+
+#include "coulomb/contact/mortar/MortarSegment2D.hpp"
+#include "coulomb/contact/mortar/MortarSegment3D.hpp"
+#include "coulomb/contact/mortar/MortarSegmentCurved2D.hpp"
+#include "coulomb/contact/mortar/MortarSegmentQuadratic3D.hpp"
+
+namespace coulomb::contact {
+
+namespace {
+
+using mesh::FaceType;
+
+/// The largest face (Quad9).
+constexpr int kMaxNodes = 9;
+
+/// A face's coordinates and unit normals (the normals only enter the gap,
+/// which S_j does not use: the line's or the corners' plane normal).
+template <FaceType F>
+struct SelfFace {
+  FaceNodes<F, double> x{}, n{};
+  SelfFace(const ContactFace& f, const InterfaceConfiguration& configuration) {
+    constexpr int dim = FaceTraits<F>::spaceDim;
+    for (int a = 0; a < FaceTraits<F>::nodes; ++a)
+      for (int c = 0; c < dim; ++c) x[a][c] = configuration.point(f.interfaceIndex[a])[c];
+    std::array<double, 3> normal{};
+    if constexpr (dim == 2) {
+      normal = {-(x[1][1] - x[0][1]), x[1][0] - x[0][0], 0.0};
+    } else {
+      // Triangle: (x1 - x0) x (x2 - x0); quadrilateral: the diagonals (x2 - x0) x (x3 - x1).
+      const bool triangle = F == FaceType::Tri3 || F == FaceType::Tri6;
+      std::array<double, 3> u{}, v{};
+      for (int c = 0; c < 3; ++c)
+        u[c] = x[triangle ? 1 : 2][c] - x[0][c], v[c] = x[triangle ? 2 : 3][c] - x[triangle ? 0 : 1][c];
+      normal = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    }
+    const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+    for (auto& node : n)
+      for (int c = 0; c < dim; ++c) node[c] = length > 0.0 ? normal[c] / length : 0.0;
+  }
+};
+
+/// The face paired with itself by the mortar pass' kernel for its type:
+/// its D (values) or, with `row`, adds d D_corner / d x to it (the slave and
+/// master coordinates are the same DoFs; D does not depend on the normals).
+template <FaceType F>
+void selfIntegral(const ContactFace& f, const InterfaceConfiguration& configuration, bool axisymmetric,
+                  double tolerance, std::array<double, kMaxNodes>* D, int corner, DerivativeRow* row) {
+  const SelfFace<F> face(f, configuration);
+  const auto& x = face.x;
+  const auto& n = face.n;
+  auto values = [&]() {
+    if constexpr (F == FaceType::Line2)
+      return integrateSegment2D<double>(x, n, x, tolerance, axisymmetric);
+    else if constexpr (F == FaceType::Line3)
+      return integrateCurvedSegment2D<F, F, double>(x, n, x, tolerance, axisymmetric);
+    else if constexpr (F == FaceType::Tri3 || F == FaceType::Quad4)
+      return integrateSegment3D<F, F, double>(x, n, x, tolerance);
+    else
+      return integrateQuadraticSegment3D<F, F, double>(x, n, x, tolerance);
+  };
+  if (D) {
+    const auto segment = values();
+    for (int j = 0; j < FaceTraits<F>::nodes; ++j) (*D)[j] = segment.D[j];
+    return;
+  }
+  auto linearization = [&]() {
+    if constexpr (F == FaceType::Line2)
+      return linearizeSegment2D(x, n, x, tolerance, axisymmetric);
+    else if constexpr (F == FaceType::Line3)
+      return linearizeCurvedSegment2D<F, F>(x, n, x, tolerance, axisymmetric);
+    else if constexpr (F == FaceType::Tri3 || F == FaceType::Quad4)
+      return linearizeSegment3D<F, F>(x, n, x, tolerance);
+    else
+      return linearizeQuadraticSegment3D<F, F>(x, n, x, tolerance);
+  };
+  // Inputs: slave coordinates [0, dim n), slave normals, master coordinates [2 dim n, 3 dim n).
+  const auto lin = linearization();
+  constexpr int dim = FaceTraits<F>::spaceDim, nodes = FaceTraits<F>::nodes;
+  for (int a = 0; a < nodes; ++a)
+    for (int c = 0; c < dim; ++c) {
+      const double d = lin.dD[corner][a * dim + c] + lin.dD[corner][2 * dim * nodes + a * dim + c];
+      if (d != 0.0) (*row)[{f.nodes[a], c}] += d;
+    }
+}
+
+void selfIntegralOfType(const ContactFace& f, const InterfaceConfiguration& x, bool axisymmetric, double tolerance,
+                        std::array<double, kMaxNodes>* D, int corner, DerivativeRow* row) {
+  switch (f.type) {
+    case FaceType::Line2: return selfIntegral<FaceType::Line2>(f, x, axisymmetric, tolerance, D, corner, row);
+    case FaceType::Line3: return selfIntegral<FaceType::Line3>(f, x, axisymmetric, tolerance, D, corner, row);
+    case FaceType::Tri3: return selfIntegral<FaceType::Tri3>(f, x, axisymmetric, tolerance, D, corner, row);
+    case FaceType::Quad4: return selfIntegral<FaceType::Quad4>(f, x, axisymmetric, tolerance, D, corner, row);
+    case FaceType::Tri6: return selfIntegral<FaceType::Tri6>(f, x, axisymmetric, tolerance, D, corner, row);
+    case FaceType::Quad8: return selfIntegral<FaceType::Quad8>(f, x, axisymmetric, tolerance, D, corner, row);
+    case FaceType::Quad9: return selfIntegral<FaceType::Quad9>(f, x, axisymmetric, tolerance, D, corner, row);
+  }
+}
+
+}  // namespace
+
+std::vector<double> nodalSupportMeasures(const ContactInterface& contact, const InterfaceConfiguration& x,
+                                         const std::vector<NodalMortarEntry>& entries, double relativeTolerance) {
+  const auto& offset = contact.slaveNodeFaceOffsets();
+  std::vector<std::array<double, kMaxNodes>> faceD;  // per integrated face
+  std::vector<int> faceIndex(contact.slaveFaces().size(), -1);
+  std::vector<double> measures;
+  measures.reserve(entries.size());
+  for (const auto& entry : entries) {
+    const int slaveNode = contact.slaveNodeIndex(entry.node);
+    double measure = 0.0;
+    for (int k = offset[slaveNode]; k < offset[slaveNode + 1]; ++k) {
+      const int face = contact.slaveNodeFaces()[k];
+      if (faceIndex[face] < 0) {
+        faceIndex[face] = static_cast<int>(faceD.size());
+        faceD.emplace_back();
+        selfIntegralOfType(contact.slaveFaces()[face], x, contact.axisymmetric(), relativeTolerance, &faceD.back(), 0,
+                           nullptr);
+      }
+      measure += faceD[faceIndex[face]][contact.slaveNodeFaceCorners()[k]];
+    }
+    measures.push_back(measure);
+  }
+  return measures;
+}
+
+DerivativeRow nodalSupportMeasureDerivative(const ContactInterface& contact, const InterfaceConfiguration& x,
+                                            long long node, double relativeTolerance) {
+  const auto& offset = contact.slaveNodeFaceOffsets();
+  const int slaveNode = contact.slaveNodeIndex(node);
+  DerivativeRow row;
+  for (int k = offset[slaveNode]; k < offset[slaveNode + 1]; ++k)
+    selfIntegralOfType(contact.slaveFaces()[contact.slaveNodeFaces()[k]], x, contact.axisymmetric(),
+                       relativeTolerance, nullptr, contact.slaveNodeFaceCorners()[k], &row);
+  return row;
+}
+
+}  // namespace coulomb::contact
