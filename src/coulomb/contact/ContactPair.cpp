@@ -152,7 +152,7 @@ void ContactPair::beginStep(int deckStep) {
   stepStartSupport_ = support_;
   stepStartWeight_.clear();
   if (settings_.slipMeasure == SlipMeasure::Objective)
-    for (const auto& entry : mortar_.entries) stepStartWeight_.push_back(objectiveWeight(entry, nullptr));
+    for (const auto& entry : stepStartMortar_.entries) stepStartWeight_.push_back(objectiveWeight(entry, nullptr));
   // The direction of Slip Reset Frequency < 0: the converged slip of the
   // nodes that slipped (a sticking node's slip is round-off, an open one's
   // its approach); a retry keeps that of the converged step.

@@ -80,7 +80,6 @@ NodalMortarQuantities integrateMortarPass(const ContactInterface& contact, const
                                           const std::vector<NodalNormal>& normals, const SearchResult& pairs,
                                           bool withDerivatives, double relativeTolerance = 1e-12);
 
-
 /// @brief Collective: sums the partial quantities of all ranks on the owner of
 /// each slave node. Returns the entries of the owned slave nodes that received a
 /// contribution on some rank (increasing nodes). The summation order is by

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "coulomb/contact/mortar/AuxiliaryPlane.hpp"
 #include "coulomb/contact/mortar/MortarSegment2D.hpp"
 #include "coulomb/contact/mortar/MortarSegment3D.hpp"
 #include "coulomb/contact/mortar/MortarSegmentCurved2D.hpp"
@@ -14,9 +15,6 @@ namespace coulomb::contact {
 namespace {
 
 using mesh::FaceType;
-
-/// The largest face (Quad9).
-constexpr int kMaxNodes = 9;
 
 /// A face's coordinates and unit normals (the normals only enter the gap,
 /// which S_j does not use: the line's or the corners' plane normal).
@@ -33,10 +31,8 @@ struct SelfFace {
     } else {
       // Triangle: (x1 - x0) x (x2 - x0); quadrilateral: the diagonals (x2 - x0) x (x3 - x1).
       const bool triangle = F == FaceType::Tri3 || F == FaceType::Tri6;
-      std::array<double, 3> u{}, v{};
-      for (int c = 0; c < 3; ++c)
-        u[c] = x[triangle ? 1 : 2][c] - x[0][c], v[c] = x[triangle ? 2 : 3][c] - x[triangle ? 0 : 1][c];
-      normal = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+      normal = plane::cross(plane::sub(x[triangle ? 1 : 2], x[0]),
+                            plane::sub(x[triangle ? 2 : 3], x[triangle ? 0 : 1]));
     }
     const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
     for (auto& node : n)
@@ -49,7 +45,7 @@ struct SelfFace {
 /// master coordinates are the same DoFs; D does not depend on the normals).
 template <FaceType F>
 void selfIntegral(const ContactFace& f, const InterfaceConfiguration& configuration, bool axisymmetric,
-                  double tolerance, std::array<double, kMaxNodes>* D, int corner, DerivativeRow* row) {
+                  double tolerance, std::array<double, mesh::kMaxFaceNodes>* D, int corner, DerivativeRow* row) {
   const SelfFace<F> face(f, configuration);
   const auto& x = face.x;
   const auto& n = face.n;
@@ -89,7 +85,7 @@ void selfIntegral(const ContactFace& f, const InterfaceConfiguration& configurat
 }
 
 void selfIntegralOfType(const ContactFace& f, const InterfaceConfiguration& x, bool axisymmetric, double tolerance,
-                        std::array<double, kMaxNodes>* D, int corner, DerivativeRow* row) {
+                        std::array<double, mesh::kMaxFaceNodes>* D, int corner, DerivativeRow* row) {
   switch (f.type) {
     case FaceType::Line2: return selfIntegral<FaceType::Line2>(f, x, axisymmetric, tolerance, D, corner, row);
     case FaceType::Line3: return selfIntegral<FaceType::Line3>(f, x, axisymmetric, tolerance, D, corner, row);
@@ -106,7 +102,7 @@ void selfIntegralOfType(const ContactFace& f, const InterfaceConfiguration& x, b
 std::vector<double> nodalSupportMeasures(const ContactInterface& contact, const InterfaceConfiguration& x,
                                          const std::vector<NodalMortarEntry>& entries, double relativeTolerance) {
   const auto& offset = contact.slaveNodeFaceOffsets();
-  std::vector<std::array<double, kMaxNodes>> faceD;  // per integrated face
+  std::vector<std::array<double, mesh::kMaxFaceNodes>> faceD;  // per integrated face
   std::vector<int> faceIndex(contact.slaveFaces().size(), -1);
   std::vector<double> measures;
   measures.reserve(entries.size());
