@@ -152,7 +152,14 @@ TEST(FiniteStrain, RunStopsWhenCutbacksAreExhausted) {
     simulation.run();
     FAIL() << "a step that cannot converge must end the run";
   } catch (const coulomb::Error& e) {
-    EXPECT_NE(std::string(e.what()).find("Maximum Cutbacks"), std::string::npos) << e.what();
+    const std::string message = e.what();
+    EXPECT_NE(message.find("Maximum Cutbacks"), std::string::npos) << message;
+    // The rejected iterate names the inverted element and its block (the
+    // lowest-numbered one on any rank: the same message at every np).
+    const auto at = message.find("an iterate was rejected: element ");
+    ASSERT_NE(at, std::string::npos) << message;
+    EXPECT_NE(message.find(" of block '", at), std::string::npos) << message;
+    EXPECT_NE(message.find("' is inverted (det F <= 0)", at), std::string::npos) << message;
   }
   worldComm()->barrier();
   EXPECT_FALSE(std::filesystem::exists(simulation.settings().outputFile)) << "no complete-looking result may remain";

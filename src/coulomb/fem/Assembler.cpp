@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Export.hpp>
@@ -91,9 +93,10 @@ struct Assembler::Impl {
     }
   }
 
-  /// Element loop of one block; returns true if an element inverted.
+  /// Element loop of one block; returns its first inverted element (0-based
+  /// global number), or -1.
   template <CellType T>
-  bool assembleBlock(std::size_t b, double time, const double* u, double* r, const TangentTarget& K) const {
+  long long assembleBlock(std::size_t b, double time, const double* u, double* r, const TangentTarget& K) const {
     using Traits = CellTraits<T>;
     constexpr int n = Traits::nodes, nd = Traits::dofs;
     const auto& block = mesh.global().blocks[b];
@@ -103,12 +106,12 @@ struct Assembler::Impl {
     std::array<double, nd> X{}, ue{}, re{};
     std::array<double, nd * nd> ke{};
     std::array<int, nd> ldof{}, column{};
-    bool inverted = false;
+    long long inverted = -1;
     for (long long element : mesh.localElements(b)) {
       gather<T>(&block.connectivity[(element - block.firstElement) * n], u, X, ue, ldof);
       const KernelStatus status = cellResidualTangent<T>(blockMaterial[b], X, ue, force, re, K.owned ? &ke : nullptr);
       if (status != KernelStatus::Ok) {
-        inverted = true;
+        if (inverted < 0) inverted = element;
         continue;
       }
       for (int i = 0; i < nd; ++i) r[ldof[i]] += re[i];
@@ -357,13 +360,16 @@ AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residua
     m.ghostMatrix->setAllToScalar(0.0);
     K = {jacobian, m.ghostMatrix.get(), m.ownedColumn.data(), static_cast<int>(m.dofs.ownedMap()->getNodeNumElements())};
   }
-  bool inverted = false;
+  long long inverted = std::numeric_limits<long long>::max();  // the lowest inverted element here
   {
     auto uData = m.overlapU->getData(0);
     auto rData = m.overlapResidual->getDataNonConst(0);
-    for (std::size_t b = 0; b < m.mesh.global().blocks.size(); ++b)
-      inverted |= dispatchCell(m.mesh.global().blocks[b].cellType,
-                               [&](auto tag) { return m.assembleBlock<decltype(tag)::value>(b, time, uData.get(), rData.get(), K); });
+    for (std::size_t b = 0; b < m.mesh.global().blocks.size(); ++b) {
+      const long long first = dispatchCell(m.mesh.global().blocks[b].cellType, [&](auto tag) {
+        return m.assembleBlock<decltype(tag)::value>(b, time, uData.get(), rData.get(), K);
+      });
+      if (first >= 0) inverted = std::min(inverted, first);
+    }
     for (const auto& face : m.loadedFaces) {
       switch (faceType(m.mesh.global().blocks[face.block].cellType, face.side)) {
         case FaceType::Line2: m.faceForces<FaceType::Line2>(face, time, rData.get()); break;
@@ -377,7 +383,16 @@ AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residua
     }
   }
   AssemblyStatus status;
-  status.invertedElement = anyRank(*m.mesh.comm(), inverted);
+  long long lowest = inverted;
+  Teuchos::reduceAll(*m.mesh.comm(), Teuchos::REDUCE_MIN, inverted, Teuchos::outArg(lowest));
+  if (lowest != std::numeric_limits<long long>::max()) {
+    status.invertedElement = true;
+    status.invertedElementNumber = lowest;
+    for (const auto& block : m.mesh.global().blocks)
+      if (lowest >= block.firstElement &&
+          lowest < block.firstElement + block.numElements())
+        status.invertedBlock = mesh::displayName(block.name, "block", block.id);
+  }
 
   const auto prescribed = constraints_->ownedConstrainedDofs();
   if (residual || reactions) {  // a tangent-only call (NOX's computeJacobian) needs no residual export
@@ -447,6 +462,12 @@ void Assembler::nodalStress(const Vector& u, MultiVector& stress) const {
     for (int k = 0; k < 6; ++k) out[k][i] = s[k];
     out[6][i] = vonMises(s);
   }
+}
+
+std::string AssemblyStatus::invertedMessage() const {
+  if (!invertedElement) return "";
+  return "element " + std::to_string(invertedElementNumber + 1) + " of block '" + invertedBlock +
+         "' is inverted (det F <= 0)";
 }
 
 }  // namespace coulomb::fem

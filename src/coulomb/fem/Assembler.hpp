@@ -24,6 +24,12 @@ namespace coulomb::fem {
 /// displacement (det F <= 0) makes the Newton iterate unusable.
 struct AssemblyStatus {
   bool invertedElement = false;
+  /// The lowest-numbered inverted element on any rank (0-based global
+  /// number, -1 if none) and its block's name: the failure names them.
+  long long invertedElementNumber = -1;
+  std::string invertedBlock;
+  /// "element N of block 'B' is inverted (det F <= 0)", or "" if none is.
+  std::string invertedMessage() const;
 };
 
 class Assembler {

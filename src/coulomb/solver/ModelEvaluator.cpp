@@ -86,7 +86,7 @@ void ModelEvaluator::evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<doubl
   if (f != Teuchos::null) updateForceScale();
   // An inverted element makes this iterate meaningless: a NaN residual makes
   // NOX's FiniteValue test fail the step, and the stepper cuts back.
-  if (status.invertedElement) reject("an element is inverted (det F <= 0)", f.get());
+  if (status.invertedElement) reject(status.invertedMessage(), f.get());
 }
 
 void ModelEvaluator::updateForceScale() const {
@@ -132,10 +132,10 @@ void ModelEvaluator::evalContact(const Vector& x, Vector* f, const Teuchos::RCP<
     if (bulkResidual_.is_null()) bulkResidual_ = Teuchos::rcp(new Vector(map_));
     const auto& comm = *map_->getComm();
     if (reactions_.is_null()) reactions_ = Teuchos::rcp(new Vector(map_));
-    const bool inverted =
-        anyRank(comm, assembler_.assemble(time_, u, bulkResidual_.get(), nullptr, reactions_.get()).invertedElement);
+    const auto assembled = assembler_.assemble(time_, u, bulkResidual_.get(), nullptr, reactions_.get());
+    const bool inverted = assembled.invertedElement;  // the same on every rank (Assembler::assemble)
     lastInvalid_ = inverted || anyRank(comm, !allFinite(*bulkResidual_));
-    if (lastInvalid_) failure_ = inverted ? "an element is inverted (det F <= 0)" : "the bulk residual is not finite";
+    if (lastInvalid_) failure_ = inverted ? assembled.invertedMessage() : "the bulk residual is not finite";
     try {
       if (!lastInvalid_ && saddlePoint_) contact_->updateSaddlePoint(x, u);
       else if (!lastInvalid_) contact_->update(u, *bulkResidual_);
