@@ -297,7 +297,12 @@ void ContactPair::integrateCurrentConfiguration() {
   }
   throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
   mortar_ = sumToOwners(*interface_, local);
-  support_ = nodalSupportMeasures(*interface_, x_, mortar_.entries);
+  try {
+    support_ = nodalSupportMeasures(*interface_, x_, mortar_.entries);
+  } catch (const Error& e) {
+    failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();
+  }
+  throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
 }
 
 void ContactPair::differentiate(const std::vector<char>& ownedFlags) {

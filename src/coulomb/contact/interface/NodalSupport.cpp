@@ -3,12 +3,16 @@
 #include "coulomb/contact/interface/NodalSupport.hpp"
 
 #include <cmath>
+#include <type_traits>
 
 #include "coulomb/contact/mortar/AuxiliaryPlane.hpp"
+#include "coulomb/contact/mortar/DualBasis.hpp"
 #include "coulomb/contact/mortar/MortarSegment2D.hpp"
 #include "coulomb/contact/mortar/MortarSegment3D.hpp"
 #include "coulomb/contact/mortar/MortarSegmentCurved2D.hpp"
+#include "coulomb/contact/mortar/MortarScalarTypes.hpp"
 #include "coulomb/contact/mortar/MortarSegmentQuadratic3D.hpp"
+#include "coulomb/core/Error.hpp"
 
 namespace coulomb::contact {
 
@@ -44,9 +48,8 @@ struct SelfFace {
 /// its D (values) or, with `row`, adds d D_corner / d x to it (the slave and
 /// master coordinates are the same DoFs; D does not depend on the normals).
 template <FaceType F>
-void selfIntegral(const ContactFace& f, const InterfaceConfiguration& configuration, bool axisymmetric,
-                  double tolerance, std::array<double, mesh::kMaxFaceNodes>* D, int corner, DerivativeRow* row) {
-  const SelfFace<F> face(f, configuration);
+void selfKernel(const ContactFace& f, const SelfFace<F>& face, bool axisymmetric, double tolerance,
+                std::array<double, mesh::kMaxFaceNodes>* D, int corner, DerivativeRow* row) {
   const auto& x = face.x;
   const auto& n = face.n;
   auto values = [&]() {
@@ -84,6 +87,63 @@ void selfIntegral(const ContactFace& f, const InterfaceConfiguration& configurat
     }
 }
 
+/// The Sacado type faceMass is instantiated for with a 3D face of type F
+/// (the one of its own pair's kernel, MortarScalarTypes.hpp).
+template <FaceType F>
+using SelfFad = std::conditional_t<F == FaceType::Tri3 || F == FaceType::Quad4, SegmentFad3D<F, F>, SubFacetFad3D<F, F>>;
+
+/// A 3D face's int N~_j dA on the curved face itself (faceMass), the
+/// fallback of selfIntegral: its D (values) or, with `row`, adds
+/// d D_corner / d x to it.
+template <FaceType F>
+void curvedIntegral(const ContactFace& f, const FaceNodes<F, double>& x, std::array<double, mesh::kMaxFaceNodes>* D,
+                    int corner, DerivativeRow* row) {
+  constexpr int nodes = FaceTraits<F>::nodes;
+  if (D) {
+    const auto mass = faceMass<F, double>(x);
+    for (int j = 0; j < nodes; ++j) (*D)[j] = mass.De[j];
+    return;
+  }
+  using Fad = SelfFad<F>;
+  constexpr int inputs =
+      F == FaceType::Tri3 || F == FaceType::Quad4 ? segment3DInputs<F, F> : 3 * (nodes + nodes);
+  FaceNodes<F, Fad> fx;
+  for (int a = 0; a < nodes; ++a)
+    for (int c = 0; c < 3; ++c) fx[a][c] = Fad(inputs, 3 * a + c, x[a][c]);
+  const auto mass = faceMass<F, Fad>(fx);
+  for (int a = 0; a < nodes; ++a)
+    for (int c = 0; c < 3; ++c) {
+      const double d = mass.De[corner].dx(3 * a + c);
+      if (d != 0.0) (*row)[{f.nodes[a], c}] += d;
+    }
+}
+
+/// selfKernel, or for a 3D face so curved or warped that the kernel cannot
+/// project it onto the plane of one of its own pieces (a bow-tie or a
+/// non-convex piece: the kernel's geometry error), its curved int N~_j dA.
+/// A real master, flatter, may still pair with such a face: S_j only
+/// scales its contact-node test and objective weight, which must not end
+/// the run (neo_hookean_shear_3d on HEX27 with the block's sides in the
+/// slave surface stopped with this error instead of cutting back).
+template <FaceType F>
+void selfIntegral(const ContactFace& f, const InterfaceConfiguration& configuration, bool axisymmetric,
+                  double tolerance, std::array<double, mesh::kMaxFaceNodes>* D, int corner, DerivativeRow* row) {
+  const SelfFace<F> face(f, configuration);
+  if constexpr (FaceTraits<F>::spaceDim == 3) {
+    DerivativeRow own;  // this face's terms: kept only if its kernel succeeds
+    try {
+      selfKernel<F>(f, face, axisymmetric, tolerance, D, corner, row ? &own : nullptr);
+    } catch (const Error&) {
+      own.clear();
+      curvedIntegral<F>(f, face.x, D, corner, row ? &own : nullptr);
+    }
+    if (row)
+      for (const auto& [key, value] : own) (*row)[key] += value;
+  } else {
+    selfKernel<F>(f, face, axisymmetric, tolerance, D, corner, row);
+  }
+}
+
 void selfIntegralOfType(const ContactFace& f, const InterfaceConfiguration& x, bool axisymmetric, double tolerance,
                         std::array<double, mesh::kMaxFaceNodes>* D, int corner, DerivativeRow* row) {
   switch (f.type) {
@@ -99,6 +159,18 @@ void selfIntegralOfType(const ContactFace& f, const InterfaceConfiguration& x, b
 
 }  // namespace
 
+std::array<double, mesh::kMaxFaceNodes> faceSupportMeasures(const ContactFace& f, const InterfaceConfiguration& x,
+                                                            bool axisymmetric, double relativeTolerance) {
+  std::array<double, mesh::kMaxFaceNodes> D{};
+  selfIntegralOfType(f, x, axisymmetric, relativeTolerance, &D, 0, nullptr);
+  return D;
+}
+
+void addFaceSupportMeasureDerivative(const ContactFace& f, const InterfaceConfiguration& x, bool axisymmetric,
+                                     int corner, DerivativeRow& row, double relativeTolerance) {
+  selfIntegralOfType(f, x, axisymmetric, relativeTolerance, nullptr, corner, &row);
+}
+
 std::vector<double> nodalSupportMeasures(const ContactInterface& contact, const InterfaceConfiguration& x,
                                          const std::vector<NodalMortarEntry>& entries, double relativeTolerance) {
   const auto& offset = contact.slaveNodeFaceOffsets();
@@ -113,9 +185,7 @@ std::vector<double> nodalSupportMeasures(const ContactInterface& contact, const 
       const int face = contact.slaveNodeFaces()[k];
       if (faceIndex[face] < 0) {
         faceIndex[face] = static_cast<int>(faceD.size());
-        faceD.emplace_back();
-        selfIntegralOfType(contact.slaveFaces()[face], x, contact.axisymmetric(), relativeTolerance, &faceD.back(), 0,
-                           nullptr);
+        faceD.push_back(faceSupportMeasures(contact.slaveFaces()[face], x, contact.axisymmetric(), relativeTolerance));
       }
       measure += faceD[faceIndex[face]][contact.slaveNodeFaceCorners()[k]];
     }
@@ -130,8 +200,8 @@ DerivativeRow nodalSupportMeasureDerivative(const ContactInterface& contact, con
   const int slaveNode = contact.slaveNodeIndex(node);
   DerivativeRow row;
   for (int k = offset[slaveNode]; k < offset[slaveNode + 1]; ++k)
-    selfIntegralOfType(contact.slaveFaces()[contact.slaveNodeFaces()[k]], x, contact.axisymmetric(),
-                       relativeTolerance, nullptr, contact.slaveNodeFaceCorners()[k], &row);
+    addFaceSupportMeasureDerivative(contact.slaveFaces()[contact.slaveNodeFaces()[k]], x, contact.axisymmetric(),
+                                    contact.slaveNodeFaceCorners()[k], row, relativeTolerance);
   return row;
 }
 

@@ -12,11 +12,26 @@
 /// kernel's measure is that of the sub-facets, the chords of a curved face,
 /// and int N~_j on the curved face differs from a covered D_j by up to 4e-3
 /// (Mortar3DQuadratic.CurvedFaceUnderACoveringMasterHasItsSelfIntegral).
+/// A 3D face too crumpled for the kernel to project it onto the plane of
+/// one of its own pieces (the kernel's bow-tie or non-convex error) takes
+/// int N~_j on the curved face instead (faceMass): S_j is a scale, and a
+/// geometry error there must not stop a run whose real mortar pairs work.
+#include <array>
 #include <vector>
 
 #include "coulomb/contact/interface/MortarPass.hpp"
 
 namespace coulomb::contact {
+
+/// @brief S of each node of slave face f (in the order of f.nodes) at x:
+/// the face paired with itself, or its int N~_j (see above). Not collective.
+std::array<double, mesh::kMaxFaceNodes> faceSupportMeasures(const ContactFace& f, const InterfaceConfiguration& x,
+                                                            bool axisymmetric, double relativeTolerance = 1e-12);
+
+/// @brief Adds d S / d x of face f's node `corner` (index into f.nodes) to
+/// `row`, keyed by the DoFs of f's nodes.
+void addFaceSupportMeasureDerivative(const ContactFace& f, const InterfaceConfiguration& x, bool axisymmetric,
+                                     int corner, DerivativeRow& row, double relativeTolerance = 1e-12);
 
 /// @brief S_j of each entry's node in the configuration x (the nodes' slave
 /// faces must be in x). Each face is integrated once. Not collective.
