@@ -156,8 +156,10 @@ def timer_keys(timers, console):
     assembly_total = timers.get("Coulomb: bulk assembly", (0.0, 0))[0]
     solve_total = timers.get("Stratimikos: BelosLOWS", (0.0, 0))[0]
     # contact: the two top-level timers of ContactModel ("update" contains
-    # search, mortar values/derivatives and the triplet matrices; "condensed
-    # tangent" contains "K + interface rows"); absent in older builds
+    # search, mortar values and the triplet matrices; "condensed tangent"
+    # contains "tangent rows", the mortar derivatives and derivative rows
+    # an update leaves for it, and "K + interface rows"; in builds before
+    # the deferred tangent rows both were in "update"); absent in older builds
     update, update_calls, update_total = per_call(timers, "Coulomb: contact update")
     tangent, tangent_calls, tangent_total = per_call(timers, "Coulomb: contact condensed tangent")
     contact_total = (update_total or 0.0) + (tangent_total or 0.0)

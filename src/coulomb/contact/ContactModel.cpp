@@ -130,8 +130,13 @@ void ContactModel::updatePairs(bool freezeSet, UpdatePair&& updatePair) {
 void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool freezeSet) {
   static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact update");
   Teuchos::TimeMonitor scope(*timer);
+  // The tangent part of the rows waits for condensedTangent() (the last
+  // update of a step needs none), unless pairs are chained: a chained
+  // pair's update moves earlier pairs' rows (PairChaining::take / restore).
+  bool anyChained = false;
+  for (std::size_t p = 0; p < pairs_.size(); ++p) anyChained = anyChained || chaining_->chained(p);
   updatePairs(freezeSet, [&](std::size_t p, bool updateSet) {
-    if (!chaining_->chained(p)) return pairs_[p]->update(u, bulkResidual, updateSet, contributions_);
+    if (!chaining_->chained(p)) return pairs_[p]->update(u, bulkResidual, updateSet, contributions_, !anyChained);
     // Slave nodes that are master nodes of earlier pairs (PairChaining.hpp).
     ContactContributions taken = chaining_->take(p, contributions_, *map_);
     ContactContributions mine;
@@ -170,9 +175,16 @@ void ContactModel::subtractPrescribedForces(Vector& reactions) const {
 
 Teuchos::RCP<CrsMatrix> ContactModel::condensedTangent(const Teuchos::RCP<CrsMatrix>& bulkTangent) const {
   COULOMB_CHECK(!saddlePoint(), "condensedTangent in the saddle-point form");
-  if (!contributes_) return bulkTangent;
   static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact condensed tangent");
   Teuchos::TimeMonitor scope(*timer);
+  {
+    // The tangent part of the last update's rows (ContactPair::emitTangent; collective).
+    static const auto rowsTimer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact tangent rows");
+    Teuchos::TimeMonitor rowsScope(*rowsTimer);
+    for (const auto& pair : pairs_)
+      if (pair->tangentPending()) pair->emitTangent(contributions_);
+  }
+  if (!contributes_) return bulkTangent;
   // J = T (K + K_c) + G = K + [K_c + G + (T - I) K + (T - I) K_c]: every term
   // in brackets lives on interface rows only, so the one operation on the
   // size of K is the final sum.

@@ -186,7 +186,9 @@ private:
   int updatesInStep_ = 0;
   ActiveSetCycle cycle_;  ///< the sets of this step's iterates
   Teuchos::RCP<CrsMatrix> transform_;  ///< T - I (for the residual)
-  ContactContributions contributions_;
+  /// The last update's rows; condensedTangent() appends their tangent part
+  /// when an update deferred it (ContactPair::emitTangent), hence mutable.
+  mutable ContactContributions contributions_;
   mutable std::vector<linalg::MatrixTriplet> interfaceRows_;  ///< condensedTangent's rows, memory reused per iterate
   mutable linalg::MatrixSum tangentSum_;  ///< J = K + [...] with buffers (and J itself) reused per iterate
   bool contributes_ = false;  ///< some rank has transform or stiffness entries

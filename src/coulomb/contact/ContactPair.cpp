@@ -182,6 +182,7 @@ void ContactPair::restoreStep() {
   x_ = stepStartX_;
   searched_ = false;
   restored_ = true;
+  tangentPending_ = false;
 }
 
 std::string ContactPair::penetrationFailure(long long node, double gap, double D) {
@@ -381,7 +382,8 @@ SlaveNode ContactPair::slaveNode(std::size_t i, bool derivatives) {
 }
 
 PairIterationSummary ContactPair::updateNodes(const Vector* bulkResidual, const std::vector<std::array<double, 3>>* z,
-                                              bool updateSet, ContactContributions& out) {
+                                              bool updateSet, bool deferTangent, ContactContributions& out) {
+  tangentPending_ = false;
   const bool slip = formulation_->usesSlip();
   const auto& map = *dofMap_;
   Teuchos::ArrayRCP<const double> r;
@@ -413,10 +415,15 @@ PairIterationSummary ContactPair::updateNodes(const Vector* bulkResidual, const 
   const std::vector<SlaveNodeState> previousStates = nodes_;
   PairIterationSummary summary;
   std::string failure;
-  std::vector<char> flags(owned, 0);
+  std::vector<char>& flags = derivativeFlags_;
+  flags.assign(owned, 0);
+  nodeResidual_.assign(owned, {0.0, 0.0, 0.0});
+  nodeMultiplier_.assign(owned, {0.0, 0.0, 0.0});
   for (std::size_t i = 0; i < owned; ++i) {
     SlaveNode n = slaveNode(i, false);
     complete(n);
+    nodeResidual_[i] = n.residual;
+    nodeMultiplier_[i] = n.multiplier;
     SlaveNodeState& node = nodes_[i];
     const ContactState previous = node.state;
     ContactState state = ContactState::Inactive;
@@ -442,45 +449,67 @@ PairIterationSummary ContactPair::updateNodes(const Vector* bulkResidual, const 
   }
   widenSearchRadius();
   throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
-  // Stage 2 (derivatives, Sacado): only the faces around the flagged nodes —
-  // the rest of a large slave surface costs a plain double pass.
-  differentiate(flags);
-  RowSink sink(out, *interface_, prescribed_, multiplierBlockOffset_);
-  const SlaveTransform::Marks before(out);  // where this pair's entries begin
-  std::array<DerivativeRow, 3> dw;
-  for (std::size_t i = 0; i < owned; ++i) {
-    SlaveNode n = slaveNode(i, flags[i] != 0);
-    complete(n);
-    if (slip && n.mortarDerivative != nullptr) {
-      n.slip = weightedSlip(*n.mortarDerivative, &dw);
-      n.slipDerivative = &dw;
-    }
-    formulation_->emit(n, sink, summary);
-  }
-  if (slaveTransform_->active()) {
-    const bool condensed = z == nullptr && (settings_.formulation == ContactFormulation::ALM ||
-                                            settings_.formulation == ContactFormulation::MPC);
-    slaveTransform_->toSystemRows(out, before, condensed, interface_->ownedSlaveNodes(), [&](long long node, int c) {
-      return r[map.getLocalElement(static_cast<GlobalOrdinal>(dim_ * node + c))];
-    });
-  }
+  // Stage 2: the rows, the tangent's now or when it is asked for (emitTangent).
+  const bool condensed = z == nullptr && (settings_.formulation == ContactFormulation::ALM ||
+                                          settings_.formulation == ContactFormulation::MPC);
+  emitRows(true, !deferTangent, condensed, out, summary, [&](long long node, int c) {
+    return r[map.getLocalElement(static_cast<GlobalOrdinal>(dim_ * node + c))];
+  });
+  tangentPending_ = deferTangent;
   addForceIncrements(previousStates, summary);
   reduceSummary(summary);
   return summary;
 }
 
+void ContactPair::emitRows(bool residualPart, bool tangentPart, bool condensed, ContactContributions& out,
+                           PairIterationSummary& summary, const std::function<double(long long, int)>& residual) {
+  const bool slip = formulation_->usesSlip();
+  // The derivatives (Sacado): only the faces around the flagged nodes — the
+  // rest of a large slave surface costs the values pass alone.
+  if (tangentPart) differentiate(derivativeFlags_);
+  RowSink sink(out, *interface_, prescribed_, multiplierBlockOffset_);
+  sink.residualPart = residualPart;
+  sink.tangentPart = tangentPart;
+  const SlaveTransform::Marks before(out);  // where this pair's entries begin
+  std::array<DerivativeRow, 3> dw;
+  for (std::size_t i = 0; i < nodes_.size(); ++i) {
+    SlaveNode n = slaveNode(i, tangentPart && derivativeFlags_[i] != 0);
+    n.residual = nodeResidual_[i];
+    n.multiplier = nodeMultiplier_[i];
+    if (slip && n.mortarDerivative != nullptr) {
+      n.slip = weightedSlip(*n.mortarDerivative, &dw);
+      n.slipDerivative = &dw;
+    } else if (slip && derivativeFlags_[i] != 0) {
+      n.slip = nodes_[i].weightedSlip;  // stage 1's, from the values
+    }
+    formulation_->emit(n, sink, summary);
+  }
+  // T - I of the rows the pair kept (condensed) belongs to the residual part.
+  if (slaveTransform_->active())
+    slaveTransform_->toSystemRows(out, before, condensed && residualPart, interface_->ownedSlaveNodes(), residual);
+}
+
+void ContactPair::emitTangent(ContactContributions& out) {
+  COULOMB_CHECK(tangentPending_, "emitTangent without an update that deferred its tangent");
+  PairIterationSummary figures;  // counted by the update's residual part
+  emitRows(false, true, false, out, figures, [](long long, int) -> double {
+    throw Error("emitTangent: the residual part is the update's");
+  });
+  tangentPending_ = false;
+}
+
 PairIterationSummary ContactPair::update(const Vector& u, const Vector& bulkResidual, bool updateSet,
-                                         ContactContributions& out) {
+                                         ContactContributions& out, bool deferTangent) {
   COULOMB_CHECK(!formulation_->needsMultipliers(), "update() of a pair in the saddle-point form");
   searchAndIntegrate(u);
-  return updateNodes(&bulkResidual, nullptr, updateSet, out);
+  return updateNodes(&bulkResidual, nullptr, updateSet, deferTangent, out);
 }
 
 PairIterationSummary ContactPair::updateSaddlePoint(const Vector& u, const std::vector<std::array<double, 3>>& z,
                                                     bool updateSet, ContactContributions& out) {
   COULOMB_CHECK(formulation_->needsMultipliers(), "updateSaddlePoint() of a pair in the condensed form");
   searchAndIntegrate(u);
-  return updateNodes(nullptr, &z, updateSet, out);
+  return updateNodes(nullptr, &z, updateSet, false, out);
 }
 
 }  // namespace coulomb::contact

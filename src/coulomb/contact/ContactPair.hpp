@@ -14,6 +14,7 @@
 /// rows and are left out as columns (the bulk tangent zeroes them too).
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -56,9 +57,17 @@ public:
   /// residual `bulkResidual` (same map; used to recover lambda_n), active-set
   /// update when `updateSet`, and the contributions appended to `out`.
   /// Throws coulomb::Error (every rank) when a node penetrates deeper than
-  /// the search radius.
+  /// the search radius. `deferTangent`: the residual part of the rows alone;
+  /// emitTangent() adds the tangent part when the tangent is asked for (the
+  /// last update of a step, Newton's converged iterate, needs none: there
+  /// the derivative pass is a fifth of a quadratic contact's time).
   PairIterationSummary update(const Vector& u, const Vector& bulkResidual, bool updateSet,
-                              ContactContributions& out);
+                              ContactContributions& out, bool deferTangent = false);
+  /// Collective: the tangent part of the last update's rows (made with
+  /// deferTangent), appended to `out`, at the same state.
+  void emitTangent(ContactContributions& out);
+  /// The last update deferred its tangent part and emitTangent() has not run.
+  bool tangentPending() const { return tangentPending_; }
 
   /// Saddle-point form: this pair's multiplier unknowns z_j are the global
   /// DoFs first + dim × (index in slaveNodes()) + component.
@@ -130,7 +139,14 @@ private:
   /// stage 2 it emits each node's rows with the derivatives. `bulkResidual`
   /// for the condensed forms, `z` for the saddle-point form (else null).
   PairIterationSummary updateNodes(const Vector* bulkResidual, const std::vector<std::array<double, 3>>* z,
-                                   bool updateSet, ContactContributions& out);
+                                   bool updateSet, bool deferTangent, ContactContributions& out);
+  /// Stage 2 of updateNodes (and emitTangent): each owned node's rows of the
+  /// parts asked for (RowSink::residualPart, tangentPart; the tangent part
+  /// runs the derivative pass for derivativeFlags_), then the transformed
+  /// slave rows (SlaveTransform::toSystemRows, `condensed` with the
+  /// residual part; `residual(node, c)` the bulk residual there).
+  void emitRows(bool residualPart, bool tangentPart, bool condensed, ContactContributions& out,
+                PairIterationSummary& summary, const std::function<double(long long, int)>& residual);
   /// Owned node i as the formulation sees it; `derivatives`: with the
   /// derivative pass's entries (stage 2, when it differentiated the node).
   SlaveNode slaveNode(std::size_t i, bool derivatives);
@@ -201,6 +217,12 @@ private:
   /// Slip Reset Frequency < 0); kept through a restoreStep().
   std::vector<std::array<double, 3>> lastStepSlip_;
   bool restored_ = false;  ///< restoreStep() ran since the last beginStep()
+  /// Stage 1's results for stage 2 (ownedSlaveNodes() order): which nodes
+  /// the derivative pass covers, each node's (transformed) bulk residual and
+  /// multiplier unknowns; and whether the tangent part is still to come.
+  std::vector<char> derivativeFlags_;
+  std::vector<std::array<double, 3>> nodeResidual_, nodeMultiplier_;
+  bool tangentPending_ = false;
 };
 
 }  // namespace coulomb::contact

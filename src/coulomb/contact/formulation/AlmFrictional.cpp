@@ -45,9 +45,10 @@ public:
   }
 
   void emit(const SlaveNode& n, RowSink& sink, PairIterationSummary& summary) const override {
-    if (!isActive(n.state->state) || n.mortarDerivative == nullptr) return;
-    const NodalMortarEntry& entry = *n.mortarDerivative;
-    const NodalNormal& normal = *n.normalDerivative;
+    const bool residual = sink.residualPart, tangent = sink.tangentPart;
+    if (!isActive(n.state->state) || (tangent && n.mortarDerivative == nullptr)) return;
+    const NodalMortarEntry& entry = n.mortarDerivative ? *n.mortarDerivative : *n.mortar;
+    const NodalNormal& normal = n.mortarDerivative ? *n.normalDerivative : *n.normal;
     const auto k = frictionalRows<dim>(input(n, entry, normal), n.state->state, parameters(n));
     if (!k.usable) return;
     for (int c = 0; c < dim; ++c) n.state->slipDirection[c] = k.direction[c];
@@ -63,7 +64,7 @@ public:
       force[c] = kt * entry.D * k.lambda[c];
       normalPart[c] = kt * entry.D * tn * nv[c];
     }
-    summary.addSlaveForce(force, normalPart);
+    if (residual) summary.addSlaveForce(force, normalPart);
 
     // The explicit part of d(row)/dx: through n, w, D and g~ (the r part is
     // tangentTransform). Kernel inputs: r [0, dim), n [dim, 2 dim), w [2 dim, 3 dim), D, g~.
@@ -83,11 +84,14 @@ public:
     for (int c = 0; c < dim; ++c) {
       const GlobalOrdinal target = sink.row(n.node, c);
       if (n.prescribed[c]) {
-        out.prescribedForce.push_back({target, kt * entry.D * k.lambda[c]});
+        if (residual) out.prescribedForce.push_back({target, kt * entry.D * k.lambda[c]});
         continue;
       }
-      out.transform.push_back({target, target, -1.0});
-      out.constraintResidual.push_back({target, k.rows[c]});
+      if (residual) {
+        out.transform.push_back({target, target, -1.0});
+        out.constraintResidual.push_back({target, k.rows[c]});
+      }
+      if (!tangent) continue;
       for (int m = 0; m < dim; ++m)
         if (!n.prescribed[m] && k.dRows[c][m] != 0.0)
           out.tangentTransform.push_back({target, sink.row(n.node, m), k.dRows[c][m]});
@@ -95,7 +99,7 @@ public:
     }
     // The (4.78) groups: the gap slot's row (the free component with the
     // largest |n_c|) is the normal one, the other free slots stick or slip.
-    {
+    if (residual) {
       double gapRow2 = 0, others2 = 0, largest = -1;
       int gapSlot = -1;
       for (int c = 0; c < dim; ++c)
@@ -114,15 +118,16 @@ public:
     // lambda depends on w and g~ only along driven directions (FrictionalNode.hpp).
     // Its explicit derivative rows are the same for every master node (scaled by M_jl).
     std::array<DerivativeRow, dim> lambdaRows;
-    for (int c = 0; c < dim; ++c) lambdaRows[c] = explicitRow(k.dLambda[c]);
+    for (int c = 0; c < dim && tangent; ++c) lambdaRows[c] = explicitRow(k.dLambda[c]);
     for (const auto& [master, Mjl] : entry.M)
       for (int c = 0; c < dim; ++c) {
         const GlobalOrdinal target = sink.row(master, c);
         if (sink.prescribed(master, c)) {
-          out.prescribedForce.push_back({target, -kt * Mjl * k.lambda[c]});
+          if (residual) out.prescribedForce.push_back({target, -kt * Mjl * k.lambda[c]});
           continue;
         }
-        out.constraintResidual.push_back({target, kt * Mjl * k.lambda[c]});
+        if (residual) out.constraintResidual.push_back({target, kt * Mjl * k.lambda[c]});
+        if (!tangent) continue;
         for (int m = 0; m < dim; ++m)
           if (!n.prescribed[m] && k.dLambda[c][m] != 0.0)
             out.tangentTransform.push_back({target, sink.row(n.node, m), kt * Mjl * k.dLambda[c][m]});

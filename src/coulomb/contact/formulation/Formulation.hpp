@@ -50,7 +50,11 @@ public:
   /// Whether stage 2 needs the derivatives of node `n` (its state decided).
   virtual bool needsDerivatives(const SlaveNode& n) const { return isActive(n.state->state); }
   /// Stage 2: node `n`'s contributions (every owned node, whatever its
-  /// state) and its forces and residuals into `summary`.
+  /// state) and its forces and residuals into `summary`: the parts the sink
+  /// asks for (RowSink::residualPart, tangentPart). The tangent part needs
+  /// the derivative entries (n.mortarDerivative, n.normalDerivative); the
+  /// residual part alone takes the values (n.mortar, n.normal) when they
+  /// are null. The summary counts with the residual part only.
   virtual void emit(const SlaveNode& n, RowSink& sink, PairIterationSummary& summary) const = 0;
 };
 

@@ -13,6 +13,7 @@
 #include "coulomb/contact/formulation/Formulations.hpp"
 #include "coulomb/contact/laws/CondensationFrame.hpp"
 #include "coulomb/contact/laws/NcpNode.hpp"
+#include "coulomb/core/Error.hpp"
 
 namespace coulomb::contact {
 
@@ -61,6 +62,7 @@ public:
   }
 
   void emit(const SlaveNode& n, RowSink& sink, PairIterationSummary& summary) const override {
+    COULOMB_CHECK(sink.residualPart && sink.tangentPart, "the saddle-point form emits its rows in one pass");
     auto& out = sink.out.multipliers;
     const double t = c_.thickness;
     if (!usable(n)) {

@@ -36,9 +36,10 @@ public:
   }
 
   void emit(const SlaveNode& n, RowSink& sink, PairIterationSummary& summary) const override {
-    if (!isActive(n.state->state) || n.mortarDerivative == nullptr) return;
-    const NodalMortarEntry& entry = *n.mortarDerivative;
-    const NodalNormal& normal = *n.normalDerivative;
+    const bool residual = sink.residualPart, tangent = sink.tangentPart;
+    if (!isActive(n.state->state) || (tangent && n.mortarDerivative == nullptr)) return;
+    const NodalMortarEntry& entry = n.mortarDerivative ? *n.mortarDerivative : *n.mortar;
+    const NodalNormal& normal = n.mortarDerivative ? *n.normalDerivative : *n.normal;
     const auto& nv = normal.n;
     const double D = entry.D;
     const auto f = penaltyFrictionalForce<dim>(input(n, entry, normal), n.state->state, parameters(n));
@@ -51,7 +52,7 @@ public:
     for (int c = 0; c < dim; ++c) fn += f.force[c] * nv[c];
     std::array<double, dim> normalPart{};
     for (int c = 0; c < dim; ++c) normalPart[c] = fn * nv[c];
-    summary.addSlaveForce(f.force, normalPart);
+    if (residual) summary.addSlaveForce(f.force, normalPart);
     // Kernel inputs: n [0, dim), w [dim, 2 dim), D, g~.
     auto derivative = [&](int c) {
       DerivativeRow row;
@@ -66,20 +67,21 @@ public:
     };
     auto& out = sink.out;
     for (int c = 0; c < dim; ++c) {
-      const DerivativeRow df = derivative(c);
+      const DerivativeRow df = tangent ? derivative(c) : DerivativeRow{};
       if (!n.prescribed[c]) {
-        out.contactResidual.push_back({sink.row(n.node, c), -f.force[c]});
-        sink.add(out.contactStiffness, sink.row(n.node, c), df, -1.0);
-      } else {
+        if (residual) out.contactResidual.push_back({sink.row(n.node, c), -f.force[c]});
+        if (tangent) sink.add(out.contactStiffness, sink.row(n.node, c), df, -1.0);
+      } else if (residual) {
         out.prescribedForce.push_back({sink.row(n.node, c), f.force[c]});
       }
       for (const auto& [master, Mjl] : entry.M) {
         const GlobalOrdinal target = sink.row(master, c);
         if (sink.prescribed(master, c)) {
-          out.prescribedForce.push_back({target, -Mjl / D * f.force[c]});
+          if (residual) out.prescribedForce.push_back({target, -Mjl / D * f.force[c]});
           continue;
         }
-        out.contactResidual.push_back({target, Mjl / D * f.force[c]});
+        if (residual) out.contactResidual.push_back({target, Mjl / D * f.force[c]});
+        if (!tangent) continue;
         DerivativeRow row = df;
         for (auto& [key, value] : row) value *= Mjl / D;
         const auto dM = entry.dM.find(master);

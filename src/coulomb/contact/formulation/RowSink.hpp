@@ -29,6 +29,14 @@ public:
           GlobalOrdinal multiplierOffset);
 
   ContactContributions& out;
+  /// Which part of a node's contributions emit() writes: the residual part
+  /// (residual entries, T - I, supports' forces, the summary figures) and
+  /// the tangent part (derivative rows). A condensed update writes the
+  /// residual part alone and the tangent part when the tangent is asked for
+  /// (ContactPair::emitTangent): the last residual of a step needs no
+  /// derivatives. Both by default (the saddle-point form, chained pairs).
+  bool residualPart = true;
+  bool tangentPart = true;
 
   int dimension() const { return dim_; }
   GlobalOrdinal row(long long node, int c) const { return static_cast<GlobalOrdinal>(dim_ * node + c); }
