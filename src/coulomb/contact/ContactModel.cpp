@@ -133,8 +133,7 @@ void ContactModel::update(const Vector& u, const Vector& bulkResidual, bool free
   // The tangent part of the rows waits for condensedTangent() (the last
   // update of a step needs none), unless pairs are chained: a chained
   // pair's update moves earlier pairs' rows (PairChaining::take / restore).
-  bool anyChained = false;
-  for (std::size_t p = 0; p < pairs_.size(); ++p) anyChained = anyChained || chaining_->chained(p);
+  const bool anyChained = chaining_->anyChained();
   updatePairs(freezeSet, [&](std::size_t p, bool updateSet) {
     if (!chaining_->chained(p)) return pairs_[p]->update(u, bulkResidual, updateSet, contributions_, !anyChained);
     // Slave nodes that are master nodes of earlier pairs (PairChaining.hpp).

@@ -46,6 +46,12 @@ public:
   const std::vector<std::size_t>& order() const { return order_; }
   /// Pair p has slave rows that earlier pairs may reach.
   bool chained(std::size_t p) const { return !slaveRows_[p].empty(); }
+  /// Some pair is chained.
+  bool anyChained() const {
+    for (const auto& rows : slaveRows_)
+      if (!rows.empty()) return true;
+    return false;
+  }
 
   /// Collective, before pair p's update when chained(p): takes the entries
   /// of `sofar` on pair p's slave rows out of it, onto the owners of the rows.

@@ -3,7 +3,6 @@
 #include "coulomb/contact/interface/NodalSupport.hpp"
 
 #include <cmath>
-#include <type_traits>
 
 #include "coulomb/contact/mortar/AuxiliaryPlane.hpp"
 #include "coulomb/contact/mortar/DualBasis.hpp"
@@ -87,10 +86,12 @@ void selfKernel(const ContactFace& f, const SelfFace<F>& face, bool axisymmetric
     }
 }
 
-/// The Sacado type faceMass is instantiated for with a 3D face of type F
-/// (the one of its own pair's kernel, MortarScalarTypes.hpp).
+/// The inputs of the Sacado type faceMass is instantiated for with a 3D
+/// face of type F: those of its own pair's kernel (MortarScalarTypes.hpp,
+/// SegmentFad3D for Tri3 / Quad4, SubFacetFad3D for the quadratic faces).
 template <FaceType F>
-using SelfFad = std::conditional_t<F == FaceType::Tri3 || F == FaceType::Quad4, SegmentFad3D<F, F>, SubFacetFad3D<F, F>>;
+constexpr int kSelfInputs =
+    F == FaceType::Tri3 || F == FaceType::Quad4 ? segment3DInputs<F, F> : 6 * FaceTraits<F>::nodes;
 
 /// A 3D face's int N~_j dA on the curved face itself (faceMass), the
 /// fallback of selfIntegral: its D (values) or, with `row`, adds
@@ -104,12 +105,10 @@ void curvedIntegral(const ContactFace& f, const FaceNodes<F, double>& x, std::ar
     for (int j = 0; j < nodes; ++j) (*D)[j] = mass.De[j];
     return;
   }
-  using Fad = SelfFad<F>;
-  constexpr int inputs =
-      F == FaceType::Tri3 || F == FaceType::Quad4 ? segment3DInputs<F, F> : 3 * (nodes + nodes);
+  using Fad = Sacado::Fad::SFad<double, kSelfInputs<F>>;
   FaceNodes<F, Fad> fx;
   for (int a = 0; a < nodes; ++a)
-    for (int c = 0; c < 3; ++c) fx[a][c] = Fad(inputs, 3 * a + c, x[a][c]);
+    for (int c = 0; c < 3; ++c) fx[a][c] = Fad(kSelfInputs<F>, 3 * a + c, x[a][c]);
   const auto mass = faceMass<F, Fad>(fx);
   for (int a = 0; a < nodes; ++a)
     for (int c = 0; c < 3; ++c) {
