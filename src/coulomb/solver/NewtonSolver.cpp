@@ -63,13 +63,19 @@ public:
   };
   using NOX::Thyra::Group::Group;
   CountingGroup(const CountingGroup& source, NOX::CopyType type)
-      : NOX::Thyra::Group(source, type), forcing_(source.forcing_), reuse_(source.reuse_) {}
+      : NOX::Thyra::Group(source, type),
+        forcing_(source.forcing_),
+        reuse_(source.reuse_),
+        linearFailure_(source.linearFailure_) {}
   Teuchos::RCP<NOX::Abstract::Group> clone(NOX::CopyType type) const override {
     return Teuchos::rcp(new CountingGroup(*this, type));
   }
   int lastLinearIterations() const { return last_linear_solve_num_iters_; }
   void setForcing(std::shared_ptr<Forcing> forcing) { forcing_ = std::move(forcing); }
   void setPreconditionerReuse(std::shared_ptr<PreconditionerReuse> reuse) { reuse_ = std::move(reuse); }
+  /// Shared by the clones: why the first linear solve that threw failed
+  /// (empty: none did).
+  const std::shared_ptr<std::string>& linearFailure() const { return linearFailure_; }
 
   /// NOX passes the Newton direction's "Linear Solver" list; its "Tolerance"
   /// becomes the relative residual tolerance of the Belos solve.
@@ -85,7 +91,19 @@ public:
       updatePreconditioner_ = !keep;  // NOX builds prec_ before each solve unless told not to
       ++reuse_->solves;
     }
-    return NOX::Thyra::Group::computeNewton(p);
+    try {
+      return NOX::Thyra::Group::computeNewton(p);
+    } catch (const std::exception& e) {
+      // A solver that throws (Belos on a NaN in its residual norms, e.g. from
+      // a non-finite tangent entry; its norms are global, so every rank
+      // throws) rejects the iterate instead of ending the run: the direction
+      // is not a number, so NOX's next iterate fails its finite-value test
+      // and the step is cut back, with this reason.
+      if (linearFailure_->empty()) *linearFailure_ = lastLine(e.what());
+      newton_vec_->init(std::numeric_limits<double>::quiet_NaN());
+      is_valid_newton_dir_ = true;
+      return NOX::Abstract::Group::Failed;
+    }
   }
 
 private:
@@ -123,8 +141,19 @@ private:
     return keep;
   }
 
+  /// The last non-empty line of a (Teuchos, multi-line) exception message.
+  static std::string lastLine(const std::string& what) {
+    std::string line, last;
+    std::istringstream in(what);
+    while (std::getline(in, line))
+      if (line.find_first_not_of(" \t") != std::string::npos) last = line;
+    while (!last.empty() && (last.back() == '.' || last.back() == ' ')) last.pop_back();
+    return last.empty() ? std::string("an exception without a message") : last;
+  }
+
   std::shared_ptr<Forcing> forcing_;
   std::shared_ptr<PreconditionerReuse> reuse_;
+  std::shared_ptr<std::string> linearFailure_ = std::make_shared<std::string>();
 };
 
 /// The residual test: ||f|| <= max(tol, 1000 eps) × S, S the larger of the
@@ -411,6 +440,8 @@ NewtonReport NewtonSolver::solve(Vector& u) {
   const auto status = solver->solve();
   report.converged = status == NOX::StatusTest::Converged;
   report.failure = model_->lastFailure();
+  // A linear solve that threw: its reason, not the NaN iterate's it led to.
+  if (!group->linearFailure()->empty()) report.failure = "the linear solve failed: " + *group->linearFailure();
   if (!report.converged && contact_ && contact_->cyclePeriod() > 0) report.stopReason = contact_->cycleDescription();
   if (!report.converged && report.stopReason.empty() && report.failure.empty()) {
     // Out of iterations (or NOX gave up): which groups the last iterate missed.
