@@ -9,6 +9,7 @@ DefineConstant[ np = {4, Min 1, Name "np: punch elements per edge"} ];
 // body on a TET10 one, or the other way round).
 DefineConstant[ tetbase = {0, Choices{0, 1}, Name "tetbase: tetrahedra in the base"} ];
 DefineConstant[ tetpunch = {0, Choices{0, 1}, Name "tetpunch: tetrahedra in the punch"} ];
+DefineConstant[ sides = {0, Choices{0, 1}, Name "sides: the punch's sides as the set punch_sides"} ];
 
 Point(1) = {0, 0, 0};
 Point(2) = {1, 0, 0};
@@ -62,3 +63,10 @@ Physical Surface("top", 6) = {punch[0]};      // z = 1
 Physical Surface("left", 7) = {base[5], punch[5]};   // x = 0
 Physical Surface("front", 8) = {base[2], punch[2]};  // y = 0
 Physical Surface("right", 9) = {base[3], punch[3]};  // x = 1 (the frictional patch tests load it)
+// -setnumber sides 1: the punch's four sides (x = 0, y = 0, x = 1, y = 1)
+// as a set too, which with `slave` makes a slave surface with sharp edges
+// (tests/unit/contact_sharp_edges_mpi.cpp). Off by default: another physical
+// group renumbers gmsh's nodes, and the other meshes keep theirs.
+If (sides)
+  Physical Surface("punch_sides", 10) = {punch[2], punch[3], punch[4], punch[5]};
+EndIf

@@ -84,8 +84,9 @@ void expectUniformPressure(const ContactRun& run, double current, int active, co
 
 double lastGlobal(const io::ExodusResults& r, const std::string& name);
 const std::vector<double>& lastNodal(const io::ExodusResults& r, const std::string& name);
-/// max |a - b| of nodal `field` over every step, relative to max |a| (a
-/// failed assertion if the step counts differ).
+/// max |a - b| of nodal `field` over every step, relative to max |a| (for a
+/// displacement component: to the largest |a| of any displacement component;
+/// a failed assertion if the step counts differ).
 double nodalDifference(const io::ExodusResults& a, const io::ExodusResults& b, const std::string& field);
 
 }  // namespace coulomb::test

@@ -2,6 +2,7 @@
 #include "coulomb/contact/interface/InterfaceBalance.hpp"
 #include "coulomb/contact/interface/NodalSupport.hpp"
 #include "coulomb/contact/interface/SelfContactRoles.hpp"
+#include "coulomb/contact/interface/SharpEdges.hpp"
 #include "coulomb/contact/SlaveTransform.hpp"
 
 #include <algorithm>
@@ -202,6 +203,41 @@ void ContactPair::widenSearchRadius() {
 }
 
 void ContactPair::search() {
+  searchCandidates();
+  std::string failure;
+  const std::vector<int> needed = neededSlaveNodes();
+  try {
+    normalFaces_ = chooseSlaveNormalFaces(*interface_, x_, settings_.featureAngle, radius_, &needed);
+  } catch (const Error& e) {
+    failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();
+  }
+  throwEvaluationErrorIfAnyRank(*interface_->comm(), failure);
+  // Counted on the owned nodes (each on one rank), summed.
+  std::vector<char> owned(interface_->slaveNodes().size(), 0);
+  for (int i : interface_->ownedSlaveNodes()) owned[static_cast<std::size_t>(i)] = 1;
+  std::array<long long, 2> local{0, 0}, global{0, 0};
+  for (long long node : normalFaces_.sharpNodes) local[0] += owned[interface_->slaveNodeIndex(node)];
+  for (long long node : normalFaces_.facingNodes) local[1] += owned[interface_->slaveNodeIndex(node)];
+  Teuchos::reduceAll(*interface_->comm(), Teuchos::REDUCE_SUM, 2, local.data(), global.data());
+  if (global != reportedSharp_) {
+    std::ostringstream note;
+    note << "Contact/Pairs/" << settings_.name << ": " << global[0]
+         << " slave nodes on sharp edges (faces more than 'Feature Angle' = " << settings_.featureAngle
+         << " degrees apart); " << global[1] << " of them take the normal of the side facing the master";
+    notes_.push_back(note.str());
+    reportedSharp_ = global;
+  }
+}
+
+std::vector<int> ContactPair::neededSlaveNodes() const {
+  std::vector<int> needed = slaveNodesOfFaces(*interface_, integratedFaces_);
+  needed.insert(needed.end(), interface_->ownedSlaveNodes().begin(), interface_->ownedSlaveNodes().end());
+  std::sort(needed.begin(), needed.end());
+  needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
+  return needed;
+}
+
+void ContactPair::searchCandidates() {
   // Its own counter: the number of calls shows Search Every Iteration at work.
   static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact search");
   Teuchos::TimeMonitor scope(*timer);
@@ -217,13 +253,13 @@ void ContactPair::search() {
   };
   collectively([&] {
     radius_ = std::max(defaultSearchRadius(*interface_, x_, settings_.searchRadiusFactor), widenedRadius_);
-    search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_);
+    search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_, facingNormalDot(settings_.featureAngle));
   });
   if (settings_.distribution == InterfaceDistribution::Balanced && interface_->comm()->getSize() > 1) {
     // The faces go where their candidates balance the work; search them
     // there (cheaper than sending the candidate lists along).
     integratedFaces_ = balancedSlaveFaces(*interface_, integratedFaces_, search_);
-    collectively([&] { search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_); });
+    collectively([&] { search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_, facingNormalDot(settings_.featureAngle)); });
   }
   SelfContactRoles selfRoles;
   // Roles from the step start and now (SelfContactRoles.hpp); the
@@ -263,7 +299,7 @@ void ContactPair::search() {
   notes_.push_back(note.str());
   widenedRadius_ = std::max(widenedRadius_, 2.0 * depth);
   radius_ = widenedRadius_;
-  search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_);
+  search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_, facingNormalDot(settings_.featureAngle));
 }
 
 std::vector<std::string> ContactPair::takeNotes() {
@@ -287,11 +323,8 @@ void ContactPair::integrateCurrentConfiguration() {
     searched_ = true;
   }
   try {
-    std::vector<int> needed = slaveNodesOfFaces(*interface_, integratedFaces_);
-    needed.insert(needed.end(), interface_->ownedSlaveNodes().begin(), interface_->ownedSlaveNodes().end());
-    std::sort(needed.begin(), needed.end());
-    needed.erase(std::unique(needed.begin(), needed.end()), needed.end());
-    normals_ = computeNodalNormals(*interface_, x_, false, &needed);
+    const std::vector<int> needed = neededSlaveNodes();
+    normals_ = computeNodalNormals(*interface_, x_, false, &needed, &normalFaces_);
     local = integrateMortarPass(*interface_, x_, normals_, search_, false);
   } catch (const Error& e) {
     failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();
@@ -338,7 +371,7 @@ void ContactPair::differentiate(const std::vector<char>& ownedFlags) {
   partial.dimension = dim_;
   partial.withDerivatives = true;
   try {
-    normalDerivatives_ = computeNodalNormals(*interface_, x_, true, &needed);
+    normalDerivatives_ = computeNodalNormals(*interface_, x_, true, &needed, &normalFaces_);
     partial = integrateMortarPass(*interface_, x_, normalDerivatives_, subset, true);
   } catch (const Error& e) {
     failure = std::string("Contact/Pairs/") + settings_.name + ": " + e.what();

@@ -25,6 +25,7 @@
 #include "coulomb/contact/interface/ContactSearch.hpp"
 #include "coulomb/contact/ContactSettings.hpp"
 #include "coulomb/contact/interface/MortarPass.hpp"
+#include "coulomb/contact/interface/SharpEdges.hpp"
 #include "coulomb/contact/SlaveTransform.hpp"
 #include "coulomb/contact/formulation/Formulation.hpp"
 #include "coulomb/core/TpetraTypes.hpp"
@@ -109,9 +110,15 @@ public:
   bool frictional() const { return settings_.frictional(); }
 
 private:
+  /// Collective: the candidate search (searchCandidates), then the faces
+  /// that make the normals of sharp slave nodes (SharpEdges.hpp).
+  void search();
   /// Collective: the candidate search at x_, widening the radius when slave
   /// nodes lie inside the master beyond it (SearchResult::unpairedDepth).
-  void search();
+  void searchCandidates();
+  /// The slave nodes whose normals computeNodalNormals needs on this rank:
+  /// those of the integrated faces and the owned ones (increasing).
+  std::vector<int> neededSlaveNodes() const;
   void searchAndIntegrate(const Vector& u);
   /// searchAndIntegrate at x_ (the search when due, the normals, D, M, g~).
   void integrateCurrentConfiguration();
@@ -192,6 +199,11 @@ private:
   /// of its elements, or after balancing (Interface Distribution).
   std::vector<int> integratedFaces_;
   SearchResult search_;
+  /// At the last search: the faces whose normals make each sharp slave
+  /// node's normal (SharpEdges.hpp), and the global counts of the sharp and
+  /// the facing nodes last reported in a note.
+  SlaveNormalFaces normalFaces_;
+  std::array<long long, 2> reportedSharp_{0, 0};
   std::vector<std::string> notes_;    ///< console notes not yet taken (takeNotes)
   InterfaceConfiguration x_;          ///< current interface coordinates (last update)
   std::vector<NodalNormal> normals_;  ///< by slave node index, values

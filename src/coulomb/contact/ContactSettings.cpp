@@ -114,6 +114,11 @@ void addValidContactParameters(ParameterList& valid) {
   pair.set("Search Radius Factor", d.searchRadiusFactor,
            "search radius = this x the largest slave face diameter: should exceed the gap closed in one step; an active node found deeper than the radius widens it to twice its depth for the rest of the run (the step is retried)",
            io::positive());
+  pair.set("Feature Angle", d.featureAngle,
+           "[degrees] slave faces around a node whose normals differ by more than this are across a sharp edge "
+           "(a block's bottom and sides in one slave set): the node's normal is the average over the side that "
+           "faces the master, not over all its faces; 180 averages all faces everywhere",
+           Teuchos::rcp(new io::RangeValidator(0.0, true, 180.0, false)));
   pair.set("Interface Distribution", std::string(kDistributions.name(d.distribution)),
            "which rank integrates a slave face: Element Owners, the rank of its element; Balanced, the faces "
            "redistributed over all ranks by their candidate master faces at every search",
@@ -203,6 +208,7 @@ ContactSettings parseContactSettings(const ParameterList& deck) {
     s.semiSmooth = kSemiSmooth.value(io::valueOrDefault<std::string>(p, v, "Semi-Smooth Newton"));
     s.searchEveryIteration = io::valueOrDefault<bool>(p, v, "Search Every Iteration");
     s.searchRadiusFactor = io::valueOrDefault<double>(p, v, "Search Radius Factor");
+    s.featureAngle = io::valueOrDefault<double>(p, v, "Feature Angle");
     s.distribution = kDistributions.value(io::valueOrDefault<std::string>(p, v, "Interface Distribution"));
     s.friction.type = kFrictionLaws.value(io::valueOrDefault<std::string>(p, v, "Friction Law"));
     s.friction.coefficient = io::valueOrDefault<double>(p, v, "Friction Coefficient");

@@ -67,6 +67,10 @@ struct ContactPairSettings {
   SemiSmoothNewton semiSmooth = SemiSmoothNewton::Full;
   bool searchEveryIteration = false;  ///< else once per load step
   double searchRadiusFactor = 1.0;    ///< radius = factor × largest slave face diameter
+  /// Faces around a slave node whose normals differ by more than this
+  /// [degrees] are across a sharp edge; the node takes the normal of the side
+  /// facing the master (SharpEdges.hpp). 180: every normal averages all faces.
+  double featureAngle = 60.0;
   InterfaceDistribution distribution = InterfaceDistribution::Balanced;
   // Friction (ALM only; FrictionalNode.hpp).
   FrictionLaw friction;               ///< law and its parameters (None: frictionless)

@@ -25,6 +25,7 @@ std::string firstDifferentOption(const ContactPairSettings& a, const ContactPair
       {"Search Every Iteration",
        [](const auto& x, const auto& y) { return x.searchEveryIteration == y.searchEveryIteration; }},
       {"Search Radius Factor", [](const auto& x, const auto& y) { return x.searchRadiusFactor == y.searchRadiusFactor; }},
+      {"Feature Angle", [](const auto& x, const auto& y) { return x.featureAngle == y.featureAngle; }},
       {"Friction Law", [](const auto& x, const auto& y) { return x.friction.type == y.friction.type; }},
       {"Friction Coefficient", [](const auto& x, const auto& y) { return x.friction.coefficient == y.friction.coefficient; }},
       {"Tresca Threshold", [](const auto& x, const auto& y) { return x.friction.threshold == y.friction.threshold; }},

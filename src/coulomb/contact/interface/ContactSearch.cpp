@@ -124,7 +124,7 @@ SearchResult searchContactPairs(const ContactInterface& contact, const Interface
 }
 
 SearchResult searchContactPairs(const ContactInterface& contact, const InterfaceConfiguration& x, double radius,
-                                const std::vector<int>& slaveFaces) {
+                                const std::vector<int>& slaveFaces, double maximumNormalDot) {
   requireRadius(radius, "search radius");
   COULOMB_CHECK(x.dimension == contact.dimension() &&
                       x.x.size() == contact.interfaceNodes().size() * static_cast<std::size_t>(x.dimension),
@@ -138,12 +138,20 @@ SearchResult searchContactPairs(const ContactInterface& contact, const Interface
   const auto& masters = contact.masterFaces();
   std::vector<Entry> entries;
   entries.reserve(masters.size());
+  // The facing test's master normals (a degenerate face passes it: the
+  // mortar kernel reports it).
+  const bool facingTest = maximumNormalDot < 1.0;
+  std::vector<std::array<double, 3>> masterNormal(facingTest ? masters.size() : 0);
+  std::vector<char> masterNormalValid(masterNormal.size(), 0);
   for (std::size_t m = 0; m < masters.size(); ++m) {
     Box box;
     if (enlargedBox(masters[m], x, margin, box))
       entries.emplace_back(box, static_cast<int>(m));
     else
       ++result.skippedFaces;
+    if (facingTest)
+      masterNormalValid[m] =
+          faceOutwardNormal(x.dimension, mesh::numCorners(masters[m].type), faceCoordinates(masters[m], x), masterNormal[m]);
   }
   // Range constructor: bulk loading by packing (better tree than insertion).
   const bgi::rtree<Entry, bgi::rstar<16>> tree(entries.begin(), entries.end());
@@ -162,7 +170,17 @@ SearchResult searchContactPairs(const ContactInterface& contact, const Interface
     tree.query(bgi::intersects(box), std::back_inserter(hits));
     std::vector<int>& found = result.candidates[k];
     found.reserve(hits.size());
-    for (const Entry& hit : hits) found.push_back(hit.second);
+    std::array<double, 3> normal{};
+    const bool slaveNormalValid =
+        facingTest && faceOutwardNormal(x.dimension, mesh::numCorners(slaves[s].type), faceCoordinates(slaves[s], x), normal);
+    for (const Entry& hit : hits) {
+      const int m = hit.second;
+      if (slaveNormalValid && masterNormalValid[m] &&
+          normal[0] * masterNormal[m][0] + normal[1] * masterNormal[m][1] + normal[2] * masterNormal[m][2] >
+              maximumNormalDot)
+        continue;  // the faces do not face each other
+      found.push_back(m);
+    }
     std::sort(found.begin(), found.end());
     if (found.empty()) recordUnpairedDepth(contact, x, tree, slaves[s], result);
   }

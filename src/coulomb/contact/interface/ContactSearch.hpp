@@ -75,8 +75,14 @@ struct SearchResult {
 SearchResult searchContactPairs(const ContactInterface& contact, const InterfaceConfiguration& x, double radius);
 
 /// @brief Candidates of the given slave faces (indices into slaveFaces()).
+/// Facing test: a pair whose faces' outward normals (of their corners'
+/// planes, FaceProximity.hpp) have n_s . n_m > maximumNormalDot is no
+/// candidate (1: no test). Faces turned away from each other, or at right
+/// angles — the side of a block beside a flat master — have no contact
+/// along the slave normal; on a tilted side face the auxiliary plane still
+/// finds an overlap, with gaps measured sideways (SharpEdges.hpp).
 SearchResult searchContactPairs(const ContactInterface& contact, const InterfaceConfiguration& x, double radius,
-                                const std::vector<int>& slaveFaces);
+                                const std::vector<int>& slaveFaces, double maximumNormalDot = 1.0);
 
 /// @brief Collective: the total number of candidate pairs over all ranks (for logs).
 long long globalPairCount(const SearchResult& result, const Teuchos::Comm<int>& comm);

@@ -27,6 +27,26 @@ double segmentDistance(const Vec& a, const Vec& b, const Vec& p) {
 
 }  // namespace
 
+bool faceOutwardNormal(int dim, int numNodes, const std::array<std::array<double, 3>, 4>& nodes, Vec& normal) {
+  Vec x[4];
+  for (int a = 0; a < numNodes; ++a) x[a] = {nodes[a][0], nodes[a][1], dim == 3 ? nodes[a][2] : 0.0};
+  normal = {0.0, 0.0, 0.0};
+  if (dim == 2) {
+    const Vec t = minus(x[1], x[0]);
+    normal = {t[1], -t[0], 0.0};
+  } else {
+    // Newell's normal: twice the area vector of the polygon.
+    for (int a = 0; a < numNodes; ++a) {
+      const Vec area = cross(x[a], x[(a + 1) % numNodes]);
+      for (int c = 0; c < 3; ++c) normal[c] += area[c];
+    }
+  }
+  const double length = std::sqrt(dot(normal, normal));
+  if (!(length > 0.0) || !std::isfinite(length)) return false;
+  for (double& c : normal) c /= length;
+  return true;
+}
+
 FaceProximity faceProximity(int dim, int numNodes, const std::array<std::array<double, 3>, 4>& nodes,
                             const std::array<double, 3>& p) {
   FaceProximity result;
@@ -39,25 +59,15 @@ FaceProximity faceProximity(int dim, int numNodes, const std::array<std::array<d
     boundary = std::min(boundary, segmentDistance(x[a], x[(a + 1) % numNodes], q));
   result.distance = boundary;
 
+  // The plane through x[0] (2D) or the node average (3D).
   Vec normal{0.0, 0.0, 0.0};
   Vec origin = x[0];
-  if (dim == 2) {
-    const Vec t = minus(x[1], x[0]);
-    normal = {t[1], -t[0], 0.0};
-  } else {
-    // Newell's normal (twice the area vector of the polygon) through the node average.
+  if (dim == 3) {
     origin = {0.0, 0.0, 0.0};
-    for (int a = 0; a < numNodes; ++a) {
-      const Vec area = cross(x[a], x[(a + 1) % numNodes]);
-      for (int c = 0; c < 3; ++c) {
-        normal[c] += area[c];
-        origin[c] += x[a][c] / numNodes;
-      }
-    }
+    for (int a = 0; a < numNodes; ++a)
+      for (int c = 0; c < 3; ++c) origin[c] += x[a][c] / numNodes;
   }
-  const double length = std::sqrt(dot(normal, normal));
-  if (!(length > 0.0)) return result;
-  for (double& c : normal) c /= length;
+  if (!faceOutwardNormal(dim, numNodes, nodes, normal)) return result;
   result.normalDistance = dot(minus(q, origin), normal);
 
   if (dim == 2) {

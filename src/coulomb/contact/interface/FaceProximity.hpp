@@ -24,6 +24,11 @@ struct FaceProximity {
   bool overFace = false;       ///< the normal projection of p lies on the face (edges included)
 };
 
+/// @brief The outward unit normal of the face (Line2: (dy, -dx); Tri3 /
+/// Quad4: Newell's normal, the mean plane's); false for a degenerate face.
+bool faceOutwardNormal(int dim, int numNodes, const std::array<std::array<double, 3>, 4>& nodes,
+                       std::array<double, 3>& normal);
+
 /// @brief `dim` = 2 (numNodes = 2) or 3 (numNodes = 3 or 4); `nodes[a]` the
 /// coordinates of node a in outward order, `p` the point. A degenerate face
 /// (zero length or area) gives the distance to its nodes and overFace = false.

@@ -204,7 +204,8 @@ NodalNormal averagedNormal(int dimension, const std::vector<FaceAtNode>& faces, 
 }
 
 std::vector<NodalNormal> computeNodalNormals(const ContactInterface& contact, const InterfaceConfiguration& x,
-                                             bool withDerivatives, const std::vector<int>* slaveNodeIndices) {
+                                             bool withDerivatives, const std::vector<int>* slaveNodeIndices,
+                                             const SlaveNormalFaces* faces) {
   const int dim = contact.dimension();
   COULOMB_CHECK(x.dimension == dim && x.x.size() == contact.interfaceNodes().size() * dim,
                   "interface configuration does not match the contact interface");
@@ -217,7 +218,13 @@ std::vector<NodalNormal> computeNodalNormals(const ContactInterface& contact, co
   std::vector<FaceAtNode> around;
   auto compute = [&](int i) {
     around.clear();
-    for (int k = offset[i]; k < offset[i + 1]; ++k) {
+    const bool all = !faces || faces->allFaces(i);
+    for (int k = offset[i], chosen = 0; k < offset[i + 1]; ++k) {
+      if (!all) {
+        const auto& use = faces->faces[static_cast<std::size_t>(i)];
+        if (chosen == static_cast<int>(use.size()) || use[static_cast<std::size_t>(chosen)] != k - offset[i]) continue;
+        ++chosen;
+      }
       const ContactFace& f = slaveFaces[faceOf[k]];
       FaceAtNode& a = around.emplace_back();
       a.type = f.type;

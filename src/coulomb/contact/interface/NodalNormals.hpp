@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "coulomb/contact/interface/ContactInterface.hpp"
+#include "coulomb/contact/interface/SharpEdges.hpp"
 #include "coulomb/contact/mortar/DualBasis.hpp"
 
 namespace coulomb::contact {
@@ -95,8 +96,12 @@ NodalNormal averagedNormal(int dimension, const std::vector<FaceAtNode>& faces, 
 /// listed stay zero. Default (nullptr): every slave node. No communication:
 /// with the same configuration every rank computes the same normals (and
 /// throws the same errors when it computes every node).
+/// `faces` (SharpEdges.hpp): at a sharp node, the faces whose corner normals
+/// are averaged (the group facing the master); nullptr or an empty entry:
+/// all the node's faces.
 std::vector<NodalNormal> computeNodalNormals(const ContactInterface& contact, const InterfaceConfiguration& x,
                                              bool withDerivatives,
-                                             const std::vector<int>* slaveNodeIndices = nullptr);
+                                             const std::vector<int>* slaveNodeIndices = nullptr,
+                                             const SlaveNormalFaces* faces = nullptr);
 
 }  // namespace coulomb::contact

@@ -1,0 +1,119 @@
+// Slave surfaces with sharp edges (SharpEdges.hpp): the contact patch tests
+// with the punch's sides in the slave surface as well as its bottom. The
+// sides touch nothing, so the answer must be the plain patch test's — the
+// uniform stress, to round-off, every bottom node at the same pressure — and
+// no side node in contact. With the normals averaged across the edge
+// ('Feature Angle' = 180: the search's facing test off as well) the edge
+// nodes' normals point 45 degrees out of the bottom, the side faces pair with
+// the master sideways (a zero diagonal in the condensed tangent: the linear
+// solve fails) and the uniform state is lost: the test's own control that it
+// can fail. np = 1, 2, 3 (ctest MpiTests.np*).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "ContactTestSupport.hpp"
+#include "TestSupport.hpp"
+#include "coulomb/core/Error.hpp"
+
+namespace coulomb::test {
+namespace {
+
+constexpr double kE = 210000, kNu = 0.3, kDelta = 0.01;
+
+/// The patch deck with `sides` added to the slave surface `slave`, and the
+/// pair's Feature Angle when `featureAngle` > 0.
+ShippedDeck sharpPatchDeck(const std::string& name, const std::string& mesh, const std::string& sides,
+                           double featureAngle) {
+  ShippedDeck deck(name, mesh);
+  deck.replace("name=\"Slave\" type=\"string\" value=\"slave\"/>",
+               "name=\"Slave\" type=\"string\" value=\"slave, " + sides + "\"/>" +
+                   (featureAngle > 0 ? "<Parameter name=\"Feature Angle\" type=\"double\" value=\"" +
+                                           std::to_string(featureAngle) + "\"/>"
+                                     : std::string()));
+  deck.solveToRoundOff();
+  return deck;
+}
+
+/// Largest |u - u_exact| of the 2D patch (plane strain, free to expand along x).
+double patch2dError(const ContactRun& run) {
+  double error = 0;
+  forOwnedNodes(*run.simulation, [&](long long, const double* X, const double* u) {
+    error = std::max({error, std::abs(u[1] + kDelta * X[1]), std::abs(u[0] - kNu / (1 - kNu) * kDelta * X[0])});
+  });
+  return globalMax(error);
+}
+
+/// Largest |u - u_exact| of the 3D patch (uniaxial stress).
+double patch3dError(const ContactRun& run) {
+  double error = 0;
+  forOwnedNodes(*run.simulation, [&](long long, const double* X, const double* u) {
+    error = std::max({error, std::abs(u[2] + kDelta * X[2]), std::abs(u[0] - kNu * kDelta * X[0]),
+                      std::abs(u[1] - kNu * kDelta * X[1])});
+  });
+  return globalMax(error);
+}
+
+/// The run's error relative to delta, or infinity when the run fails (the
+/// error is thrown on every rank).
+double relativeErrorOrFailure(const std::string& name, const std::string& deck,
+                              double (*error)(const ContactRun&)) {
+  try {
+    auto run = runDeckText(name, deck);
+    return error(run) / kDelta;
+  } catch (const Error&) {
+    return std::numeric_limits<double>::infinity();
+  }
+}
+
+}  // namespace
+
+// 2D: the punch's bottom and both its sides in one slave surface; the two
+// bottom corners are on sharp edges (90 degrees), their normals those of the
+// bottom, which faces the base.
+TEST(SharpEdges, Patch2DWithThePunchSidesInTheSlaveSurface) {
+  auto run = runDeckText("sharp_patch_2d",
+                         sharpPatchDeck("contact_patch_2d", "contact_patch2d.e", "punch_left, punch_right", 0).text);
+  EXPECT_LT(patch2dError(run), 1e-9 * kDelta);
+  if (worldComm()->getRank() != 0) return;
+  const double sigma = kE * kDelta / (1 - kNu * kNu);
+  const double current = sigma / (1 + kNu / (1 - kNu) * kDelta);  // per current length
+  expectUniformPressure(run, current, 8, "y", sigma);  // the 8 bottom nodes, no side node
+}
+
+TEST(SharpEdges, Patch2DWithNormalsAveragedAcrossTheEdgesLosesTheUniformState) {
+  EXPECT_GT(relativeErrorOrFailure(
+                "sharp_patch_2d_averaged",
+                sharpPatchDeck("contact_patch_2d", "contact_patch2d.e", "punch_left, punch_right", 180).text,
+                patch2dError),
+            1e-3);
+}
+
+// 3D: the punch's bottom and its four sides; the 16 bottom-edge nodes are on
+// sharp edges, the 4 bottom corners on corners of three faces. HEX8 (QUAD4
+// faces) and HEX20 (QUAD8 faces with the transformed basis, whose rows mix a
+// node with its edges' mid-side nodes on the sides as well).
+TEST(SharpEdges, Patch3DWithThePunchSidesInTheSlaveSurface) {
+  for (const auto& [mesh, slaveNodes] :
+       {std::pair<std::string, int>{"contact_patch3d_sides.e", 25}, {"contact_patch3d_sides_hex20.e", 65}}) {
+    SCOPED_TRACE(mesh);
+    ShippedDeck deck = sharpPatchDeck("contact_patch_3d", "contact_patch3d.e", "punch_sides", 0);
+    deck.replace(shippedMesh("contact_patch3d.e"), shippedMesh(mesh));
+    auto run = runDeckText("sharp_patch_3d_" + mesh.substr(0, mesh.size() - 2), deck.text);
+    EXPECT_LT(patch3dError(run), 1e-9 * kDelta);
+    if (worldComm()->getRank() != 0) continue;
+    const double sigma = kE * kDelta;
+    const double current = sigma / ((1 + kNu * kDelta) * (1 + kNu * kDelta));  // per current area
+    expectUniformPressure(run, current, slaveNodes, "z", sigma);
+  }
+}
+
+TEST(SharpEdges, Patch3DWithNormalsAveragedAcrossTheEdgesLosesTheUniformState) {
+  ShippedDeck deck = sharpPatchDeck("contact_patch_3d", "contact_patch3d.e", "punch_sides", 180);
+  deck.replace(shippedMesh("contact_patch3d.e"), shippedMesh("contact_patch3d_sides.e"));
+  EXPECT_GT(relativeErrorOrFailure("sharp_patch_3d_averaged", deck.text, patch3dError), 1e-3);
+}
+
+}  // namespace coulomb::test
