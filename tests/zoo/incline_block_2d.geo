@@ -49,3 +49,10 @@ Physical Curve("bottom", 3) = {1};
 Physical Curve("master", 4) = {3};
 Physical Curve("slave", 5) = {5};
 Physical Curve("back", 6) = {8};
+// -setnumber skin 1 (zoo case incline_block_skin_2d): the block's bottom and
+// both ends (x = 0 and x = 40) as one more set, `skin`: a slave surface with
+// two sharp corners. Off by default: a physical group more renumbers the nodes.
+DefineConstant[ skin = {0, Choices{0, 1}, Name "skin: the block's bottom and ends as the set skin"} ];
+If (skin)
+  Physical Curve("skin", 7) = {5, 6, 8};
+EndIf
