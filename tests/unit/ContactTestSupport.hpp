@@ -84,9 +84,12 @@ void expectUniformPressure(const ContactRun& run, double current, int active, co
 
 double lastGlobal(const io::ExodusResults& r, const std::string& name);
 const std::vector<double>& lastNodal(const io::ExodusResults& r, const std::string& name);
-/// max |a - b| of nodal `field` over every step, relative to max |a| (for a
-/// displacement component: to the largest |a| of any displacement component;
-/// a failed assertion if the step counts differ).
+/// max |a - b| of nodal `field` over every step, relative to max |a| (a
+/// failed assertion if the step counts differ).
 double nodalDifference(const io::ExodusResults& a, const io::ExodusResults& b, const std::string& field);
+/// The same relative to the largest |a| of any of `scaleFields` (e.g. a
+/// displacement component against every component).
+double nodalDifference(const io::ExodusResults& a, const io::ExodusResults& b, const std::string& field,
+                       const std::vector<std::string>& scaleFields);
 
 }  // namespace coulomb::test

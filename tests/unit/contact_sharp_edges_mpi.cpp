@@ -12,11 +12,18 @@
 
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <numeric>
 #include <string>
 
 #include "ContactTestSupport.hpp"
 #include "TestSupport.hpp"
+#include "coulomb/contact/interface/ContactSearch.hpp"
+#include "coulomb/contact/interface/NodalNormals.hpp"
+#include "coulomb/contact/interface/SharpEdges.hpp"
 #include "coulomb/core/Error.hpp"
+#include "coulomb/io/ExodusReader.hpp"
+#include "coulomb/mesh/Mesh.hpp"
 
 namespace coulomb::test {
 namespace {
@@ -56,14 +63,16 @@ double patch3dError(const ContactRun& run) {
   return globalMax(error);
 }
 
-/// The run's error relative to delta, or infinity when the run fails (the
-/// error is thrown on every rank).
+/// The run's error relative to delta, or infinity when Newton fails (the
+/// error is thrown on every rank); any other error fails the test.
 double relativeErrorOrFailure(const std::string& name, const std::string& deck,
                               double (*error)(const ContactRun&)) {
   try {
     auto run = runDeckText(name, deck);
     return error(run) / kDelta;
-  } catch (const Error&) {
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("Newton did not converge"), std::string::npos) << what;
     return std::numeric_limits<double>::infinity();
   }
 }
@@ -114,6 +123,77 @@ TEST(SharpEdges, Patch3DWithNormalsAveragedAcrossTheEdgesLosesTheUniformState) {
   ShippedDeck deck = sharpPatchDeck("contact_patch_3d", "contact_patch3d.e", "punch_sides", 180);
   deck.replace(shippedMesh("contact_patch3d.e"), shippedMesh("contact_patch3d_sides.e"));
   EXPECT_GT(relativeErrorOrFailure("sharp_patch_3d_averaged", deck.text, patch3dError), 1e-3);
+}
+
+// The pieces on the 3D patch at its reference configuration (the punch's
+// bottom on the base's top, slave set = bottom + sides, 4 x 4 bottom faces,
+// 3 layers of side faces): which nodes are sharp, which faces make their
+// normals, the normals, the search's facing test, and the same choice for a
+// node whether a rank examines every slave node or a few.
+TEST(SharpEdges, ChoiceNormalsAndFacingTestOnThePatch) {
+  using namespace contact;
+  auto global = std::make_shared<const mesh::GlobalMesh>(io::readExodus(shippedMesh("contact_patch3d_sides.e")));
+  const mesh::Mesh mesh(global, worldComm());
+  const ContactInterface c(mesh, "slave, punch_sides", "master");
+  const InterfaceConfiguration x = referenceConfiguration(c);
+  const double radius = defaultSearchRadius(c, x);
+  const SlaveNormalFaces all = chooseSlaveNormalFaces(c, x, 60, radius);
+  // Sharp: the 16 nodes around the bottom (4 corners of three faces, 12 on
+  // its edges) and the 4 x 3 on the vertical edges above them (two sides
+  // at 90 degrees). Facing the base: the 16 around the bottom.
+  EXPECT_EQ(all.sharpNodes.size(), 28u);
+  EXPECT_EQ(all.facingNodes.size(), 16u);
+  const auto normals = computeNodalNormals(c, x, true, nullptr, &all);
+  int bottomFacing = 0, verticalEdges = 0;
+  for (std::size_t i = 0; i < c.slaveNodes().size(); ++i) {
+    const double* X = x.point(c.interfaceNodeIndex(c.slaveNodes()[i]));
+    const bool onBottom = std::abs(X[2] - 0.5) < 1e-12;
+    const bool onVerticalEdge = (std::abs(X[0]) < 1e-12 || std::abs(X[0] - 1) < 1e-12) &&
+                                (std::abs(X[1]) < 1e-12 || std::abs(X[1] - 1) < 1e-12);
+    const auto& n = normals[i].n;
+    if (onBottom) {
+      // Every bottom node points down, the edge and corner nodes as well.
+      EXPECT_NEAR(n[2], -1.0, 1e-14) << "node " << c.slaveNodes()[i] + 1;
+      bottomFacing += !all.allFaces(static_cast<int>(i));
+    } else if (onVerticalEdge) {
+      // Above the bottom a vertical edge faces nothing: the two sides' average.
+      EXPECT_NEAR(std::abs(n[0]), std::sqrt(0.5), 1e-14);
+      EXPECT_NEAR(std::abs(n[1]), std::sqrt(0.5), 1e-14);
+      EXPECT_TRUE(all.allFaces(static_cast<int>(i)));
+      ++verticalEdges;
+    }
+    ASSERT_FALSE(normals[i].derivative.empty());
+  }
+  EXPECT_EQ(bottomFacing, 16);
+  EXPECT_EQ(verticalEdges, 12);
+  // A rank that examines a few nodes makes the same choice for them.
+  const std::vector<int> some{0, 5, 17, static_cast<int>(c.slaveNodes().size()) - 1};
+  const SlaveNormalFaces few = chooseSlaveNormalFaces(c, x, 60, radius, &some);
+  for (int i : some) {
+    const auto& expected = all.allFaces(i) ? std::vector<int>{} : all.faces[static_cast<std::size_t>(i)];
+    const auto& got = few.allFaces(i) ? std::vector<int>{} : few.faces[static_cast<std::size_t>(i)];
+    EXPECT_EQ(got, expected) << "slave node " << i;
+  }
+  // The facing test: no side face pairs with the base's top; without it
+  // the side faces of the bottom layer find candidates.
+  std::vector<int> every(c.slaveFaces().size());
+  std::iota(every.begin(), every.end(), 0);
+  const SearchResult facing = searchContactPairs(c, x, radius, every, facingNormalDot(60));
+  const SearchResult plain = searchContactPairs(c, x, radius, every, facingNormalDot(180));
+  int sideFacesWithCandidates = 0, sideFacesWithoutTest = 0;
+  for (std::size_t k = 0; k < every.size(); ++k) {
+    const auto& f = c.slaveFaces()[static_cast<std::size_t>(every[k])];
+    bool side = false;
+    for (int a = 0; a < f.numNodes; ++a) side = side || x.point(f.interfaceIndex[a])[2] > 0.5 + 1e-12;
+    if (!side) {
+      EXPECT_EQ(facing.candidates[k], plain.candidates[k]);  // the bottom keeps every candidate
+      continue;
+    }
+    sideFacesWithCandidates += !facing.candidates[k].empty();
+    sideFacesWithoutTest += !plain.candidates[k].empty();
+  }
+  EXPECT_EQ(sideFacesWithCandidates, 0);
+  EXPECT_GT(sideFacesWithoutTest, 0);
 }
 
 }  // namespace coulomb::test

@@ -51,3 +51,10 @@ Physical Surface("bottom", 3) = {1};
 Physical Surface("master", 4) = {base[0]};
 Physical Surface("slave", 5) = {101};
 Physical Surface("top", 6) = {punch[0]};
+// -setnumber skin 1 (zoo case units_patch_skin_3d): the punch's bottom and its
+// four sides as one more set, `skin`: a slave surface with sharp edges and
+// corners. Off by default: a physical group more renumbers the nodes.
+DefineConstant[ skin = {0, Choices{0, 1}, Name "skin: the punch's bottom and sides as the set skin"} ];
+If (skin)
+  Physical Surface("skin", 7) = {101, punch[2], punch[3], punch[4], punch[5]};
+EndIf

@@ -203,6 +203,9 @@ void ContactPair::widenSearchRadius() {
 }
 
 void ContactPair::search() {
+  // Its own counter: the number of calls shows Search Every Iteration at work.
+  static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact search");
+  Teuchos::TimeMonitor scope(*timer);
   searchCandidates();
   std::string failure;
   const std::vector<int> needed = neededSlaveNodes();
@@ -238,9 +241,7 @@ std::vector<int> ContactPair::neededSlaveNodes() const {
 }
 
 void ContactPair::searchCandidates() {
-  // Its own counter: the number of calls shows Search Every Iteration at work.
-  static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: contact search");
-  Teuchos::TimeMonitor scope(*timer);
+  const double facing = facingNormalDot(settings_.featureAngle);
   // Each stage on every rank, then one agreed error if any rank failed.
   auto collectively = [&](const auto& stage) {
     std::string failure;
@@ -253,13 +254,13 @@ void ContactPair::searchCandidates() {
   };
   collectively([&] {
     radius_ = std::max(defaultSearchRadius(*interface_, x_, settings_.searchRadiusFactor), widenedRadius_);
-    search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_, facingNormalDot(settings_.featureAngle));
+    search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_, facing);
   });
   if (settings_.distribution == InterfaceDistribution::Balanced && interface_->comm()->getSize() > 1) {
     // The faces go where their candidates balance the work; search them
     // there (cheaper than sending the candidate lists along).
     integratedFaces_ = balancedSlaveFaces(*interface_, integratedFaces_, search_);
-    collectively([&] { search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_, facingNormalDot(settings_.featureAngle)); });
+    collectively([&] { search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_, facing); });
   }
   SelfContactRoles selfRoles;
   // Roles from the step start and now (SelfContactRoles.hpp); the
@@ -299,7 +300,7 @@ void ContactPair::searchCandidates() {
   notes_.push_back(note.str());
   widenedRadius_ = std::max(widenedRadius_, 2.0 * depth);
   radius_ = widenedRadius_;
-  search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_, facingNormalDot(settings_.featureAngle));
+  search_ = searchContactPairs(*interface_, x_, radius_, integratedFaces_, facing);
 }
 
 std::vector<std::string> ContactPair::takeNotes() {

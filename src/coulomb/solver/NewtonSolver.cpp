@@ -19,6 +19,7 @@
 #include <NOX_StatusTest_NormWRMS.H>
 #include <NOX_Thyra.H>
 #include <NOX_Utils.H>
+#include <Thyra_SolveSupportTypes.hpp>
 #include <Thyra_TpetraThyraWrappers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
@@ -93,12 +94,15 @@ public:
     }
     try {
       return NOX::Thyra::Group::computeNewton(p);
-    } catch (const std::exception& e) {
-      // A solver that throws (Belos on a NaN in its residual norms, e.g. from
-      // a non-finite tangent entry; its norms are global, so every rank
-      // throws) rejects the iterate instead of ending the run: the direction
-      // is not a number, so NOX's next iterate fails its finite-value test
-      // and the step is cut back, with this reason.
+    } catch (const Thyra::CatastrophicSolveFailure& e) {
+      // A Belos solve that throws (Thyra wraps Belos' errors in this: a NaN
+      // in its residual norms, e.g. from a zero diagonal in the condensed
+      // tangent; the norms are global, so every rank throws) rejects the
+      // iterate instead of ending the run: the direction is not a number,
+      // NOX's "Rescue Bad Newton Solve" (its default) takes it, the next
+      // iterate fails the finite-value test and the step is cut back, with
+      // this reason. Anything else (a preconditioner or a direct solver may
+      // throw on some ranks only) still ends the run.
       if (linearFailure_->empty()) *linearFailure_ = lastLine(e.what());
       newton_vec_->init(std::numeric_limits<double>::quiet_NaN());
       is_valid_newton_dir_ = true;

@@ -182,7 +182,10 @@ SearchResult searchContactPairs(const ContactInterface& contact, const Interface
       found.push_back(m);
     }
     std::sort(found.begin(), found.end());
-    if (found.empty()) recordUnpairedDepth(contact, x, tree, slaves[s], result);
+    // Only a face with no master face in reach: one whose candidates all
+    // failed the facing test (a block's side beside a flat master) is near
+    // the master, not inside it.
+    if (hits.empty()) recordUnpairedDepth(contact, x, tree, slaves[s], result);
   }
   return result;
 }

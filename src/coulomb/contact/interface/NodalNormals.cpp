@@ -203,6 +203,19 @@ NodalNormal averagedNormal(int dimension, const std::vector<FaceAtNode>& faces, 
   return result;
 }
 
+FaceAtNode faceAtNode(const ContactInterface& contact, const InterfaceConfiguration& x, int k) {
+  const ContactFace& f = contact.slaveFaces()[contact.slaveNodeFaces()[k]];
+  FaceAtNode a;
+  a.type = f.type;
+  a.corner = contact.slaveNodeFaceCorners()[k];
+  a.nodes = f.nodes;
+  for (int b = 0; b < f.numNodes; ++b) {
+    const double* p = x.point(f.interfaceIndex[b]);
+    for (int c = 0; c < x.dimension; ++c) a.x[b][c] = p[c];
+  }
+  return a;
+}
+
 std::vector<NodalNormal> computeNodalNormals(const ContactInterface& contact, const InterfaceConfiguration& x,
                                              bool withDerivatives, const std::vector<int>* slaveNodeIndices,
                                              const SlaveNormalFaces* faces) {
@@ -212,9 +225,6 @@ std::vector<NodalNormal> computeNodalNormals(const ContactInterface& contact, co
   const std::size_t numSlaveNodes = contact.slaveNodes().size();
   std::vector<NodalNormal> normals(numSlaveNodes);
   const auto& offset = contact.slaveNodeFaceOffsets();
-  const auto& faceOf = contact.slaveNodeFaces();
-  const auto& cornerOf = contact.slaveNodeFaceCorners();
-  const auto& slaveFaces = contact.slaveFaces();
   std::vector<FaceAtNode> around;
   auto compute = [&](int i) {
     around.clear();
@@ -225,15 +235,7 @@ std::vector<NodalNormal> computeNodalNormals(const ContactInterface& contact, co
         if (chosen == static_cast<int>(use.size()) || use[static_cast<std::size_t>(chosen)] != k - offset[i]) continue;
         ++chosen;
       }
-      const ContactFace& f = slaveFaces[faceOf[k]];
-      FaceAtNode& a = around.emplace_back();
-      a.type = f.type;
-      a.corner = cornerOf[k];
-      a.nodes = f.nodes;
-      for (int b = 0; b < f.numNodes; ++b) {
-        const double* p = x.point(f.interfaceIndex[b]);
-        for (int c = 0; c < dim; ++c) a.x[b][c] = p[c];
-      }
+      around.push_back(faceAtNode(contact, x, k));
     }
     try {
       normals[i] = averagedNormal(dim, around, withDerivatives);

@@ -66,6 +66,10 @@ struct FaceAtNode {
   std::array<std::array<double, 3>, mesh::kMaxFaceNodes> x{};  ///< current coordinates (x[a][2] unused in 2D)
 };
 
+/// @brief Face k of the node-to-face lists (contact.slaveNodeFaces()[k]) as
+/// seen from its node (slaveNodeFaceCorners()[k]) in configuration x.
+FaceAtNode faceAtNode(const ContactInterface& contact, const InterfaceConfiguration& x, int k);
+
 /// @brief d n / d x_{node, component}: one column of the normal's derivative.
 struct NormalDerivative {
   long long node = -1;         ///< global node number

@@ -28,6 +28,7 @@ using Vec = std::array<double, 3>;
 /// Groups within this much of the best score are taken together (a node
 /// between two equally facing groups keeps both rather than a round-off pick).
 constexpr double kScoreTie = 1e-3;
+constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
 
 double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
@@ -78,7 +79,7 @@ std::vector<int> featureGroups(const std::vector<Vec>& normals, double featureAn
 }
 
 double facingNormalDot(double featureAngleDegrees) {
-  return featureAngleDegrees < 180.0 ? -std::cos(featureAngleDegrees * M_PI / 180.0) : 1.0;
+  return featureAngleDegrees < 180.0 ? -std::cos(featureAngleDegrees * kRadiansPerDegree) : 1.0;
 }
 
 std::vector<int> facingGroups(const std::vector<Vec>& groupNormals, const std::vector<Vec>& masterNormals,
@@ -103,11 +104,8 @@ SlaveNormalFaces chooseSlaveNormalFaces(const ContactInterface& contact, const I
   if (!(featureAngleDegrees < 180.0)) return result;
   const int dim = contact.dimension();
   const auto& offset = contact.slaveNodeFaceOffsets();
-  const auto& faceOf = contact.slaveNodeFaces();
-  const auto& cornerOf = contact.slaveNodeFaceCorners();
-  const auto& slaveFaces = contact.slaveFaces();
   const auto& slaveNodes = contact.slaveNodes();
-  const double featureAngle = featureAngleDegrees * M_PI / 180.0;
+  const double featureAngle = featureAngleDegrees * kRadiansPerDegree;
 
   // 1. Feature groups of the examined nodes; the sharp ones are kept.
   struct Sharp {
@@ -120,17 +118,10 @@ SlaveNormalFaces chooseSlaveNormalFaces(const ContactInterface& contact, const I
   auto examine = [&](int i) {
     corner.clear();
     for (int k = offset[i]; k < offset[i + 1]; ++k) {
-      const ContactFace& f = slaveFaces[faceOf[k]];
-      FaceAtNode a;
-      a.type = f.type;
-      a.corner = cornerOf[k];
-      a.nodes = f.nodes;
-      for (int b = 0; b < f.numNodes; ++b)
-        for (int c = 0; c < dim; ++c) a.x[b][c] = x.point(f.interfaceIndex[b])[c];
       try {
-        corner.push_back(averagedNormal(dim, {a}, false).n);
+        corner.push_back(averagedNormal(dim, {faceAtNode(contact, x, k)}, false).n);
       } catch (const Error&) {
-        return;  // a degenerate face: the nodal normal reports it (NodalNormals)
+        return;  // a degenerate face: the plain average, which reports it (computeNodalNormals)
       }
     }
     std::vector<int> group = featureGroups(corner, featureAngle);

@@ -34,10 +34,12 @@
 ///     on its auxiliary plane, with gaps measured sideways.
 ///
 /// The choice is made at each contact search (ContactPair::search) and kept
-/// until the next one, so within a step's Newton iterations n_j is a smooth
+/// until the next one, so between searches n_j is a smooth
 /// function of the coordinates of the chosen faces and its Sacado derivative
-/// (computeNodalNormals) is exact; a choice changing between searches is a
-/// discrete change like an active-set change.
+/// (computeNodalNormals) is exact; a choice changing at a search is a
+/// discrete change like an active-set change. A node with a degenerate face
+/// around it keeps the plain average (computeNodalNormals then reports the
+/// face).
 ///
 /// Parallel: every rank holds every interface face and the current
 /// coordinates of every interface node, so every rank makes the same choice
@@ -48,11 +50,6 @@
 #include "coulomb/contact/interface/ContactInterface.hpp"
 
 namespace coulomb::contact {
-
-/// Default of the pair's 'Feature Angle' [degrees]: adjacent faces of a
-/// smooth curved surface meshed coarsely (a circle in 8 faces: 45 degrees)
-/// stay one group; the 90-degree edges of blocks are split.
-inline constexpr double kDefaultFeatureAngleDegrees = 60.0;
 
 /// @brief Kernel: the feature group of each unit normal (single linkage: two
 /// normals at an angle <= featureAngle [radians] are in one group). Groups
