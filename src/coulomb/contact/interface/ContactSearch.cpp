@@ -8,24 +8,16 @@
 #include <limits>
 #include <utility>
 
-#include <boost/geometry/geometries/box.hpp>
-#include <boost/geometry/geometries/point.hpp>
-#include <boost/geometry/index/rtree.hpp>
-#include <boost/geometry/strategies/strategies.hpp>
-
 #include <Teuchos_CommHelpers.hpp>
 
+#include "coulomb/contact/interface/FaceBoxTree.hpp"
 #include "coulomb/contact/interface/FaceProximity.hpp"
 #include "coulomb/core/Error.hpp"
 
 namespace coulomb::contact {
 namespace {
 
-namespace bg = boost::geometry;
-namespace bgi = boost::geometry::index;
-using Point = bg::model::point<double, 3, bg::cs::cartesian>;
-using Box = bg::model::box<Point>;
-using Entry = std::pair<Box, int>;
+using namespace facebox;
 
 /// Bounding box of a face enlarged by `margin` on every side (2D: z = 0);
 /// false if a coordinate is not finite.
@@ -154,7 +146,7 @@ SearchResult searchContactPairs(const ContactInterface& contact, const Interface
           faceOutwardNormal(x.dimension, mesh::numCorners(masters[m].type), faceCoordinates(masters[m], x), masterNormal[m]);
   }
   // Range constructor: bulk loading by packing (better tree than insertion).
-  const bgi::rtree<Entry, bgi::rstar<16>> tree(entries.begin(), entries.end());
+  const Tree tree(entries.begin(), entries.end());
 
   const auto& slaves = contact.slaveFaces();
   std::vector<Entry> hits;

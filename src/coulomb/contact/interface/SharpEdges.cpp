@@ -6,11 +6,7 @@
 #include <cmath>
 #include <numeric>
 
-#include <boost/geometry/geometries/box.hpp>
-#include <boost/geometry/geometries/point.hpp>
-#include <boost/geometry/index/rtree.hpp>
-#include <boost/geometry/strategies/strategies.hpp>
-
+#include "coulomb/contact/interface/FaceBoxTree.hpp"
 #include "coulomb/contact/interface/FaceProximity.hpp"
 #include "coulomb/contact/interface/NodalNormals.hpp"
 #include "coulomb/core/Error.hpp"
@@ -18,11 +14,7 @@
 namespace coulomb::contact {
 namespace {
 
-namespace bg = boost::geometry;
-namespace bgi = boost::geometry::index;
-using Point = bg::model::point<double, 3, bg::cs::cartesian>;
-using Box = bg::model::box<Point>;
-using Entry = std::pair<Box, int>;
+using namespace facebox;
 using Vec = std::array<double, 3>;
 
 /// Groups within this much of the best score are taken together (a node
@@ -158,7 +150,7 @@ SlaveNormalFaces chooseSlaveNormalFaces(const ContactInterface& contact, const I
       }
     entries.emplace_back(Box(Point(lo[0], lo[1], lo[2]), Point(hi[0], hi[1], hi[2])), static_cast<int>(m));
   }
-  const bgi::rtree<Entry, bgi::rstar<16>> tree(entries.begin(), entries.end());
+  const Tree tree(entries.begin(), entries.end());
 
   result.faces.assign(slaveNodes.size(), {});
   std::vector<Entry> near;
