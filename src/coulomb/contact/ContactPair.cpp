@@ -222,13 +222,14 @@ void ContactPair::search() {
   for (long long node : normalFaces_.sharpNodes) local[0] += owned[interface_->slaveNodeIndex(node)];
   for (long long node : normalFaces_.facingNodes) local[1] += owned[interface_->slaveNodeIndex(node)];
   Teuchos::reduceAll(*interface_->comm(), Teuchos::REDUCE_SUM, 2, local.data(), global.data());
-  if (global != reportedSharp_) {
+  // Once a run: the counts change as the bodies deform and contact spreads.
+  if (!sharpEdgesNoted_ && global[0] > 0) {
     std::ostringstream note;
     note << "Contact/Pairs/" << settings_.name << ": " << global[0]
          << " slave nodes on sharp edges (faces more than 'Feature Angle' = " << settings_.featureAngle
          << " degrees apart); " << global[1] << " of them take the normal of the side facing the master";
     notes_.push_back(note.str());
-    reportedSharp_ = global;
+    sharpEdgesNoted_ = true;
   }
 }
 

@@ -200,10 +200,10 @@ private:
   std::vector<int> integratedFaces_;
   SearchResult search_;
   /// At the last search: the faces whose normals make each sharp slave
-  /// node's normal (SharpEdges.hpp), and the global counts of the sharp and
-  /// the facing nodes last reported in a note.
+  /// node's normal (SharpEdges.hpp); and whether the console had the note
+  /// on the first search that found sharp nodes.
   SlaveNormalFaces normalFaces_;
-  std::array<long long, 2> reportedSharp_{0, 0};
+  bool sharpEdgesNoted_ = false;
   std::vector<std::string> notes_;    ///< console notes not yet taken (takeNotes)
   InterfaceConfiguration x_;          ///< current interface coordinates (last update)
   std::vector<NodalNormal> normals_;  ///< by slave node index, values
