@@ -197,6 +197,13 @@ int ContactInterface::slaveNodeIndex(long long globalNode) const { return indexI
 
 int ContactInterface::interfaceNodeIndex(long long globalNode) const { return indexIn(interfaceNodes_, globalNode); }
 
+std::array<std::array<double, 3>, 4> faceCorners(const ContactFace& face, const InterfaceConfiguration& x) {
+  std::array<std::array<double, 3>, 4> corners{};
+  for (int a = 0; a < mesh::numCorners(face.type); ++a)
+    for (int c = 0; c < x.dimension; ++c) corners[a][c] = x.point(face.interfaceIndex[a])[c];
+  return corners;
+}
+
 InterfaceConfiguration referenceConfiguration(const ContactInterface& contact) {
   InterfaceConfiguration config;
   config.dimension = contact.dimension();

@@ -122,6 +122,10 @@ struct InterfaceConfiguration {
 /// @brief The reference configuration x = X (no communication).
 InterfaceConfiguration referenceConfiguration(const ContactInterface& contact);
 
+/// @brief The corners of a face in configuration x (2D: z = 0; a quadratic
+/// face by its corners, the straight face of proximity tests and normals).
+std::array<std::array<double, 3>, 4> faceCorners(const ContactFace& face, const InterfaceConfiguration& x);
+
 /// @brief Gathers the displacements of the interface nodes (slave and master)
 /// from an owned displacement vector to every rank.
 ///

@@ -46,15 +46,6 @@ void requireRadius(double value, const char* what) {
                   "contact search: the " << what << " must be finite and >= 0, got " << value);
 }
 
-/// The corners of a face as coordinates (2D: z = 0); a quadratic face is
-/// judged by the straight face of its corners (a proximity test).
-std::array<std::array<double, 3>, 4> faceCoordinates(const ContactFace& face, const InterfaceConfiguration& x) {
-  std::array<std::array<double, 3>, 4> nodes{};
-  for (int a = 0; a < mesh::numCorners(face.type); ++a)
-    for (int c = 0; c < x.dimension; ++c) nodes[a][c] = x.point(face.interfaceIndex[a])[c];
-  return nodes;
-}
-
 /// A slave face with no candidate: are its nodes inside the master body,
 /// deeper than the radius reaches? For each node, the nearest master face
 /// (R-tree nearest query in increasing box distance, stopped once a box is
@@ -74,7 +65,7 @@ void recordUnpairedDepth(const ContactInterface& contact, const InterfaceConfigu
     for (auto it = tree.qbegin(bgi::nearest(query, static_cast<unsigned>(tree.size()))); it != tree.qend(); ++it) {
       if (bg::distance(query, it->first) > best) break;
       const ContactFace& master = masters[it->second];
-      const FaceProximity near = faceProximity(x.dimension, mesh::numCorners(master.type), faceCoordinates(master, x), point);
+      const FaceProximity near = faceProximity(x.dimension, mesh::numCorners(master.type), faceCorners(master, x), point);
       if (near.distance < best) {
         best = near.distance;
         nearest = near;
@@ -143,7 +134,7 @@ SearchResult searchContactPairs(const ContactInterface& contact, const Interface
       ++result.skippedFaces;
     if (facingTest)
       masterNormalValid[m] =
-          faceOutwardNormal(x.dimension, mesh::numCorners(masters[m].type), faceCoordinates(masters[m], x), masterNormal[m]);
+          faceOutwardNormal(x.dimension, mesh::numCorners(masters[m].type), faceCorners(masters[m], x), masterNormal[m]);
   }
   // Range constructor: bulk loading by packing (better tree than insertion).
   const Tree tree(entries.begin(), entries.end());
@@ -164,7 +155,7 @@ SearchResult searchContactPairs(const ContactInterface& contact, const Interface
     found.reserve(hits.size());
     std::array<double, 3> normal{};
     const bool slaveNormalValid =
-        facingTest && faceOutwardNormal(x.dimension, mesh::numCorners(slaves[s].type), faceCoordinates(slaves[s], x), normal);
+        facingTest && faceOutwardNormal(x.dimension, mesh::numCorners(slaves[s].type), faceCorners(slaves[s], x), normal);
     for (const Entry& hit : hits) {
       const int m = hit.second;
       if (slaveNormalValid && masterNormalValid[m] &&

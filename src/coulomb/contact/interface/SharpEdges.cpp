@@ -31,20 +31,6 @@ bool normalize(Vec& v) {
   return true;
 }
 
-/// The corners of a face (2D: z = 0); false if a coordinate is not finite.
-bool cornerCoordinates(const ContactFace& face, const InterfaceConfiguration& x,
-                       std::array<Vec, 4>& corners, int& count) {
-  count = mesh::numCorners(face.type);
-  for (int a = 0; a < count; ++a) {
-    corners[a] = {0.0, 0.0, 0.0};
-    for (int c = 0; c < x.dimension; ++c) {
-      corners[a][c] = x.point(face.interfaceIndex[a])[c];
-      if (!std::isfinite(corners[a][c])) return false;
-    }
-  }
-  return true;
-}
-
 }  // namespace
 
 std::vector<int> featureGroups(const std::vector<Vec>& normals, double featureAngle) {
@@ -140,7 +126,12 @@ SlaveNormalFaces chooseSlaveNormalFaces(const ContactInterface& contact, const I
   std::vector<std::array<Vec, 4>> masterCorners(masters.size());
   std::vector<int> masterCount(masters.size(), 0);
   for (std::size_t m = 0; m < masters.size(); ++m) {
-    if (!cornerCoordinates(masters[m], x, masterCorners[m], masterCount[m])) continue;
+    masterCorners[m] = faceCorners(masters[m], x);
+    masterCount[m] = mesh::numCorners(masters[m].type);
+    const bool finite = std::all_of(masterCorners[m].begin(), masterCorners[m].end(), [](const Vec& p) {
+      return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]);
+    });
+    if (!finite) continue;
     if (!faceOutwardNormal(dim, masterCount[m], masterCorners[m], masterNormal[m])) continue;
     Vec lo = masterCorners[m][0], hi = masterCorners[m][0];
     for (int a = 1; a < masterCount[m]; ++a)
