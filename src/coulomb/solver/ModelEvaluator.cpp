@@ -58,6 +58,12 @@ Teuchos::RCP<Thyra::LinearOpBase<double>> ModelEvaluator::create_W_op() const {
     std::vector<linalg::MatrixTriplet> identity;
     for (GlobalOrdinal gid : map->getNodeElementList()) identity.push_back({gid, gid, 1.0});
     matrix = linalg::matrixFromTriplets(identity, map);
+  } else if (contact_ && !contact_->tangentStorage().is_null()) {
+    // Condensed contact: evalContact puts the condensed tangent in before any
+    // use, so the last one (the previous load step's) holds the place; a new
+    // K-sized matrix here, zero-filled and never read, was 5 % of the peak
+    // memory of a quadratic Hertz run (HEX20, 36k DoFs: 400 -> 380 MB).
+    matrix = contact_->tangentStorage();
   } else {
     matrix = assembler_.createMatrix();
   }
