@@ -8,6 +8,8 @@
 
 #include <filesystem>
 
+#include <Tpetra_Vector.hpp>
+
 #include "TestSupport.hpp"
 #include "coulomb/core/Error.hpp"
 #include "coulomb/io/ExodusResults.hpp"
@@ -16,9 +18,11 @@ namespace coulomb::test {
 namespace {
 
 /// u = (F - I) X with F = R_z(60 deg) diag(1.2, 0.9, 1.05) on every face of
-/// a Neo-Hookean cube, reached in `steps` load steps.
+/// a Neo-Hookean cube, reached in `steps` load steps. `boundaryIncrement`:
+/// the deck's Load Stepping/Boundary Increment.
 std::string rotationDeck(const std::string& name, int steps, int maximumCutbacks, double F[3][3],
-                         const std::string& mesh = shippedMesh("block3d.e")) {
+                         const std::string& mesh = shippedMesh("block3d.e"),
+                         const std::string& boundaryIncrement = "Imposed") {
   const std::string dir = scratchDirectory(name);
   const double theta = M_PI / 3;
   const double U[3] = {1.2, 0.9, 1.05};  // principal stretches along x, y, z
@@ -38,10 +42,13 @@ std::string rotationDeck(const std::string& name, int steps, int maximumCutbacks
     }
   body += "</ParameterList><ParameterList name=\"Load Stepping\"><Parameter name=\"Number of Steps\" type=\"int\" value=\"" + std::to_string(steps) +
           "\"/><Parameter name=\"Maximum Cutbacks\" type=\"int\" value=\"" + std::to_string(maximumCutbacks) +
-          // Each step starts from the last converged state, so that the
+          // Each step starts from the last converged state with the new
+          // boundary values imposed (the interior where it was), so that the
           // residual sequence measures Newton from a cold start (the rate
-          // test below); an extrapolated start would begin near the answer.
-          "\"/><Parameter name=\"Predictor\" type=\"string\" value=\"Previous\"/></ParameterList>"
+          // test below); an extrapolated start, or the boundary increment
+          // taken through the tangent, would begin near the answer.
+          "\"/><Parameter name=\"Predictor\" type=\"string\" value=\"Previous\"/>"
+          "<Parameter name=\"Boundary Increment\" type=\"string\" value=\"" + boundaryIncrement + "\"/></ParameterList>"
           "<ParameterList name=\"Newton\"><Parameter name=\"Relative Tolerance\" type=\"double\" value=\"1e-11\"/>"
           "<Parameter name=\"Absolute Tolerance\" type=\"double\" value=\"1e-12\"/>"
           // Exact linear solves: the rate test measures the tangent, not the
@@ -113,19 +120,90 @@ TEST_P(FiniteStrainQuadratic, LargeRotationIsExactOnCurvedDistortedMesh) {
   const std::string mesh = dir + "/distorted.e";
   writeDistortedCopy(shippedMesh("block3d_" + type + ".e"), mesh, 0.25);
   double F[3][3];
-  solver::Simulation simulation(rotationDeck("finite_strain_" + type, 12, 5, F, mesh), worldComm(), nullptr);
-  // No count of steps is asserted: the step controller may cut a step back
-  // when the first iterate (interior nodes where the last step left them)
-  // inverts a small curved cell near the moving boundary (TET10 does).
+  // The boundary increment through the tangent (the default): with it
+  // imposed instead, the first iterate of a step (interior nodes where the
+  // last step left them) inverted a small curved TET10 cell near the moving
+  // boundary and the step was cut back; now no step is.
+  solver::Simulation simulation(rotationDeck("finite_strain_" + type, 12, 5, F, mesh, "Tangent"), worldComm(),
+                                nullptr);
   const auto summary = simulation.run();
   double maxError = rotationError(simulation, F);
   if (worldComm()->getRank() == 0)
     std::cout << type << ": Neo-Hookean 60 degree rotation in " << summary.steps << " steps (" << summary.cutbacks
               << " cutbacks), max nodal error " << maxError << "\n";
   EXPECT_LT(maxError, 1e-8) << type;
+  EXPECT_EQ(summary.cutbacks, 0) << type;
+}
+
+// Boundary Increment = Tangent: the first Newton step of each load step
+// solves the problem linearised at the last converged state with the whole
+// boundary increment. At a homogeneous state with a homogeneous increment
+// prescribed on the whole boundary, the homogeneous increment solves the
+// linearised problem, so that first iterate is the exact next state, up to
+// the linear solve's tolerance (with the increment imposed on the boundary
+// alone, Newton needs 6 iterations from the cold interior); even the
+// whole 60 degree rotation in one step, which then inverts elements.
+TEST(FiniteStrain, TangentBoundaryIncrementReachesAHomogeneousStateInOneIteration) {
+  for (int steps : {12, 1}) {
+    double F[3][3];
+    solver::Simulation simulation(
+        rotationDeck("finite_strain_tangent_" + std::to_string(steps), steps, 0, F, shippedMesh("block3d.e"), "Tangent"),
+        worldComm(), nullptr);
+    const auto summary = simulation.run();
+    ASSERT_EQ(summary.steps, steps);
+    EXPECT_LT(rotationError(simulation, F), 1e-8);
+    for (const auto& norms : summary.stepResidualNorms) {
+      ASSERT_GE(norms.size(), 2u);
+      EXPECT_LT(norms[1], 1e-9 * norms[0]) << "the first iterate is the next state (to the linear solve's tolerance)";
+      EXPECT_LE(norms.size(), 3u) << "at most one more iteration, to meet the Newton tolerance of 1e-11";
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(QuadraticCells, FiniteStrainQuadratic, ::testing::Values("hex20", "hex27", "tet10"));
+
+/// The Neo-Hookean unit cube (block3d.e), bottom fixed, top pulled up by 0.3
+/// and turned in its plane (u_x = 0.2 - 0.4 y, u_y = 0.4 x - 0.2: about 22
+/// degrees), in `steps` steps, no cutback allowed.
+std::string twistDeck(const std::string& name, int steps, const std::string& boundaryIncrement) {
+  const std::string dir = scratchDirectory(name);
+  const std::string body =
+      "<ParameterList name=\"Dirichlet Conditions\">" + dirichletXml("fix", "bottom", "all", 0.0) +
+      dirichletXml("twist x", "top", "x", 0.2, {0.0, -0.4, 0.0}) + dirichletXml("twist y", "top", "y", -0.2, {0.4, 0.0, 0.0}) +
+      dirichletXml("pull", "top", "z", 0.3) +
+      "</ParameterList><ParameterList name=\"Load Stepping\"><Parameter name=\"Number of Steps\" type=\"int\" value=\"" +
+      std::to_string(steps) + "\"/><Parameter name=\"Maximum Cutbacks\" type=\"int\" value=\"0\"/>"
+      "<Parameter name=\"Boundary Increment\" type=\"string\" value=\"" + boundaryIncrement + "\"/></ParameterList>"
+      "<ParameterList name=\"Newton\"><Parameter name=\"Relative Tolerance\" type=\"double\" value=\"1e-10\"/></ParameterList>";
+  const std::string material =
+      "<Parameter name=\"Model\" type=\"string\" value=\"Neo-Hookean\"/>"
+      "<Parameter name=\"Young's Modulus\" type=\"double\" value=\"1000\"/>"
+      "<Parameter name=\"Poisson's Ratio\" type=\"double\" value=\"0.35\"/>";
+  const std::string deck = dir + "/twist.xml";
+  writeOnRoot(deck, deckXml(shippedMesh("block3d.e"), material, body));
+  return deck;
+}
+
+// The twist in one step: with the increment imposed on the top face, an
+// iterate inverts an element next to it and the run stops (no cutback
+// allowed); through the tangent the step converges, to the state that five
+// imposed steps reach (hyperelastic, no contact: the path does not matter).
+TEST(FiniteStrain, TwistInOneStepConvergesWithTheBoundaryIncrementThroughTheTangent) {
+  {
+    solver::Simulation imposed(twistDeck("twist_imposed_1", 1, "Imposed"), worldComm(), nullptr);
+    EXPECT_THROW(imposed.run(), coulomb::Error);
+  }
+  solver::Simulation reference(twistDeck("twist_imposed_5", 5, "Imposed"), worldComm(), nullptr);
+  reference.run();
+  solver::Simulation tangent(twistDeck("twist_tangent_1", 1, "Tangent"), worldComm(), nullptr);
+  const auto summary = tangent.run();
+  EXPECT_EQ(summary.steps, 1);
+  EXPECT_EQ(summary.cutbacks, 0);
+  Vector difference(tangent.displacement(), Teuchos::Copy);
+  difference.update(-1.0, reference.displacement(), 1.0);
+  EXPECT_LT(difference.normInf(), 1e-8 * reference.displacement().normInf());
+  EXPECT_GT(reference.displacement().normInf(), 0.25);  // the pull of 0.3 is in it
+}
 
 // One step of 60 degrees inverts boundary elements in the first iterate:
 // the stepper must halve the step until Newton converges, and write only

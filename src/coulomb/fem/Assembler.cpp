@@ -60,6 +60,7 @@ struct Assembler::Impl {
   Teuchos::RCP<Export> ghostToOwned;
   std::vector<int> ownedColumn;
   Teuchos::RCP<Vector> overlapResidual, overlapU;
+  Teuchos::RCP<Vector> ownedPending, overlapPending;  ///< ū − u of lagging prescribed DoFs (assemble)
   Teuchos::RCP<Import> ownedToOverlap;
   Teuchos::RCP<Export> overlapToOwned;
 
@@ -96,7 +97,12 @@ struct Assembler::Impl {
   /// Element loop of one block; returns its first inverted element (0-based
   /// global number), or -1.
   template <CellType T>
-  long long assembleBlock(std::size_t b, double time, const double* u, double* r, const TangentTarget& K) const {
+  ///
+  /// `pending` (overlap, or null): ū − u on prescribed DoFs whose iterate lags
+  /// behind the boundary values (DirichletConstraints.hpp); the elements
+  /// touching one add k_fp (ū − u_p) to their free rows.
+  long long assembleBlock(std::size_t b, double time, const double* u, double* r, const TangentTarget& K,
+                          const double* pending) const {
     using Traits = CellTraits<T>;
     constexpr int n = Traits::nodes, nd = Traits::dofs;
     const auto& block = mesh.global().blocks[b];
@@ -109,12 +115,22 @@ struct Assembler::Impl {
     long long inverted = -1;
     for (long long element : mesh.localElements(b)) {
       gather<T>(&block.connectivity[(element - block.firstElement) * n], u, X, ue, ldof);
-      const KernelStatus status = cellResidualTangent<T>(blockMaterial[b], X, ue, force, re, K.owned ? &ke : nullptr);
+      bool lagging = false;
+      for (int i = 0; i < nd && pending; ++i) lagging = lagging || (constraintsFlag(ldof[i]) && pending[ldof[i]] != 0.0);
+      const KernelStatus status =
+          cellResidualTangent<T>(blockMaterial[b], X, ue, force, re, K.owned || lagging ? &ke : nullptr);
       if (status != KernelStatus::Ok) {
         if (inverted < 0) inverted = element;
         continue;
       }
       for (int i = 0; i < nd; ++i) r[ldof[i]] += re[i];
+      if (lagging) {  // the free rows' linear response to the boundary increment still to come
+        for (int i = 0; i < nd; ++i) {
+          if (constraintsFlag(ldof[i])) continue;
+          for (int j = 0; j < nd; ++j)
+            if (constraintsFlag(ldof[j])) r[ldof[i]] += ke[i * nd + j] * pending[ldof[j]];
+        }
+      }
       if (!K.owned) continue;
       // Prescribed DoFs: zero their rows and columns (identity set after export).
       for (int i = 0; i < nd; ++i) {
@@ -343,7 +359,7 @@ bool Assembler::acceptsTangent(const CrsMatrix& matrix) const {
 }
 
 AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residual, CrsMatrix* jacobian,
-                                   Vector* reactions) {
+                                   Vector* reactions, bool linearizeLaggingBoundary) {
   Impl& m = *impl_;
   static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: bulk assembly");
   Teuchos::TimeMonitor scope(*timer);
@@ -361,12 +377,25 @@ AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residua
     K = {jacobian, m.ghostMatrix.get(), m.ownedColumn.data(), static_cast<int>(m.dofs.ownedMap()->getNodeNumElements())};
   }
   long long inverted = std::numeric_limits<long long>::max();  // the lowest inverted element here
+  // Prescribed DoFs behind their values (DirichletConstraints.hpp): only the
+  // Newton residual carries their coupling; collective test, so every rank imports.
+  Teuchos::ArrayRCP<const double> pendingData;
+  if (linearizeLaggingBoundary && residual) {
+    if (m.ownedPending.is_null()) {
+      m.ownedPending = Teuchos::rcp(new Vector(m.dofs.ownedMap()));
+      m.overlapPending = Teuchos::rcp(new Vector(m.dofs.overlapMap()));
+    }
+    if (anyRank(*m.mesh.comm(), constraints_->pendingIncrements(time, u, *m.ownedPending))) {
+      m.overlapPending->doImport(*m.ownedPending, *m.ownedToOverlap, Tpetra::INSERT);
+      pendingData = m.overlapPending->getData(0);
+    }
+  }
   {
     auto uData = m.overlapU->getData(0);
     auto rData = m.overlapResidual->getDataNonConst(0);
     for (std::size_t b = 0; b < m.mesh.global().blocks.size(); ++b) {
       const long long first = dispatchCell(m.mesh.global().blocks[b].cellType, [&](auto tag) {
-        return m.assembleBlock<decltype(tag)::value>(b, time, uData.get(), rData.get(), K);
+        return m.assembleBlock<decltype(tag)::value>(b, time, uData.get(), rData.get(), K, pendingData.get());
       });
       if (first >= 0) inverted = std::min(inverted, first);
     }

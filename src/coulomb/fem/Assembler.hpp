@@ -56,9 +56,12 @@ public:
   /// residual = f_int(u) − f_ext(t) with prescribed rows u − ū(t); jacobian
   /// (may be null) its derivative with prescribed rows/columns of the
   /// identity. Collective. `reactions` (may be null) receives f_int − f_ext
-  /// on prescribed DoFs and zero elsewhere.
+  /// on prescribed DoFs and zero elsewhere. `linearizeLaggingBoundary`: where
+  /// u lags behind ū(t) on prescribed DoFs, the free rows of the residual
+  /// also get the coupling K_fp (ū − u_p) (DirichletConstraints.hpp): the
+  /// Newton residual; off for a residual meant as forces at u itself.
   AssemblyStatus assemble(double time, const Vector& u, Vector* residual, CrsMatrix* jacobian,
-                          Vector* reactions = nullptr);
+                          Vector* reactions = nullptr, bool linearizeLaggingBoundary = false);
 
   /// ||f_ext(t)||: the 2-norm over every DoF (prescribed ones included) of
   /// the loads at `time` (surface loads and body forces; the internal force

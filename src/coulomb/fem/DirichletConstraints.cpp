@@ -1,5 +1,6 @@
 #include "coulomb/fem/DirichletConstraints.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -80,6 +81,21 @@ void DirichletConstraints::setResidualRows(double time, const Vector& ownedU, Ve
   auto u = ownedU.getData(0);
   auto r = ownedResidual.getDataNonConst(0);
   for (const auto& p : owned_) r[p.ownedLocalDof] = u[p.ownedLocalDof] - prescribed(p, time);
+}
+
+bool DirichletConstraints::pendingIncrements(double time, const Vector& ownedU, Vector& ownedPending) const {
+  ownedPending.putScalar(0.0);
+  auto u = ownedU.getData(0);
+  auto pending = ownedPending.getDataNonConst(0);
+  // In deck order, as setPrescribedValues: a later condition on the same DoF wins.
+  for (const auto& p : owned_) {
+    const double target = prescribed(p, time), now = u[p.ownedLocalDof];
+    // An iterate that carries ū up to rounding (u + (ū − u) need not be ū
+    // to the last bit) has nothing pending.
+    const bool carried = std::abs(target - now) <= 1e-12 * std::max(std::abs(target), std::abs(now));
+    pending[p.ownedLocalDof] = carried ? 0.0 : target - now;
+  }
+  return std::any_of(owned_.begin(), owned_.end(), [&](const Prescribed& p) { return pending[p.ownedLocalDof] != 0.0; });
 }
 
 std::vector<int> DirichletConstraints::ownedConstrainedDofs() const {

@@ -3,10 +3,14 @@
 /// @file DirichletConstraints.hpp
 /// @brief Prescribed displacement DoFs and their values in time.
 ///
-/// Constrained DoFs stay in the system: Newton starts each step from the
-/// prescribed values, their residual rows are u − ū and their matrix rows and
-/// columns are those of the identity, which keeps the tangent symmetric for
-/// CG. Where two conditions constrain the same DoF, the later one in the deck wins.
+/// Constrained DoFs stay in the system: their residual rows are u − ū and
+/// their matrix rows and columns are those of the identity, which keeps the
+/// tangent symmetric for CG. Newton starts each step from the prescribed
+/// values, or (Load Stepping/Boundary Increment = Tangent: Simulation.cpp)
+/// from the predictor's: an iterate whose prescribed DoFs lag behind ū gets
+/// the coupling K_fp (ū − u_p) of that lag added to its free rows by the
+/// assembler, so the first Newton step takes the boundary increment through
+/// the tangent instead of the dropped columns. Where two conditions constrain the same DoF, the later one in the deck wins.
 #include <vector>
 
 #include "coulomb/core/TpetraTypes.hpp"
@@ -28,6 +32,11 @@ public:
   void setResidualRows(double time, const Vector& ownedU, Vector& ownedResidual) const;
   /// Owned-local indices of prescribed DoFs.
   std::vector<int> ownedConstrainedDofs() const;
+  /// Writes ū(t) − u into the prescribed entries of an owned vector and zero
+  /// elsewhere (the boundary increment still to be taken by an iterate that
+  /// does not carry the prescribed values); whether any entry of this rank is
+  /// not zero.
+  bool pendingIncrements(double time, const Vector& ownedU, Vector& ownedPending) const;
 
 private:
   /// A node turned rigidly by a condition with a Rotation Angle.

@@ -21,6 +21,7 @@ namespace {
 
 // The deck's choices of the run, each declared once (io::Choices).
 const io::Choices<bool> kPredictors{{"Extrapolate", true}, {"Previous", false}};  ///< true: extrapolate
+const io::Choices<bool> kBoundaryIncrements{{"Tangent", true}, {"Imposed", false}};  ///< true: through the tangent
 const io::Choices<bool> kLinearTolerances{{"Adaptive", true}, {"Fixed", false}};  ///< true: adaptive
 
 template <typename T>
@@ -50,8 +51,15 @@ Teuchos::RCP<const ParameterList> validDeckParameters() {
     stepping.set("Maximum Cutbacks", 5, "times a step may be halved in a row and retried when Newton fails (never below Final Time / Number of Steps / 2^this); sub-steps land on every step end and load-function knot", range<int>(0, 50));
     stepping.set("Predictor", "Extrapolate",
                  "first Newton iterate of a step: Extrapolate (the last step's increment, scaled to this step) or "
-                 "Previous (the last converged state); prescribed values are set in both",
+                 "Previous (the last converged state)",
                  kPredictors.validator());
+    stepping.set("Boundary Increment", "Imposed",
+                 "how a step's first iterate meets new prescribed values: Imposed (they are written into the "
+                 "predictor, and the interior follows from the second iterate on: a large boundary increment can "
+                 "invert the elements next to the boundary first) or Tangent (the prescribed DoFs keep the "
+                 "predictor's values and the first Newton step moves them the rest of the way together with the "
+                 "interior, through the tangent, as a linear solve would)",
+                 kBoundaryIncrements.validator());
 
     ParameterList& newton = valid->sublist("Newton", false, "Newton convergence");
     const NewtonSettings defaults;
@@ -116,6 +124,8 @@ RunSettings parseRunSettings(const ParameterList& deck, const std::string& deckP
   run.finalTime = io::valueOrDefault<double>(sub("Load Stepping"), stepping, "Final Time");
   run.maximumCutbacks = io::valueOrDefault<int>(sub("Load Stepping"), stepping, "Maximum Cutbacks");
   run.extrapolate = kPredictors.value(io::valueOrDefault<std::string>(sub("Load Stepping"), stepping, "Predictor"));
+  run.boundaryThroughTangent =
+      kBoundaryIncrements.value(io::valueOrDefault<std::string>(sub("Load Stepping"), stepping, "Boundary Increment"));
   const auto& newton = valid.sublist("Newton");
   run.newton.maximumIterations = io::valueOrDefault<int>(sub("Newton"), newton, "Maximum Iterations");
   run.newton.relativeTolerance = io::valueOrDefault<double>(sub("Newton"), newton, "Relative Tolerance");

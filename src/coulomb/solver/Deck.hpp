@@ -20,6 +20,11 @@ struct RunSettings {
   double finalTime = 1.0;
   int maximumCutbacks = 5;
   bool extrapolate = true;   ///< predictor: last increment scaled to the step (else the last state)
+  /// "Boundary Increment" = Tangent: the prescribed DoFs keep the predictor's
+  /// values and the first Newton step takes the rest of their increment
+  /// through the tangent (fem/DirichletConstraints.hpp); Imposed: the
+  /// predictor carries the prescribed values (the default).
+  bool boundaryThroughTangent = false;
   bool reuseConstantTangent = true;  ///< ModelEvaluator::reuseConstantTangent
   NewtonSettings newton;
   std::string outputFile;    ///< resolved relative to the deck's folder

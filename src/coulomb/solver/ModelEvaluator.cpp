@@ -12,6 +12,7 @@
 #include "coulomb/contact/ContactModel.hpp"
 #include "coulomb/core/Error.hpp"
 #include "coulomb/core/Parallel.hpp"
+#include "coulomb/fem/Assembler.hpp"
 #include "coulomb/linalg/TripletAssembly.hpp"
 
 namespace coulomb::solver {
@@ -49,6 +50,8 @@ Thyra::ModelEvaluatorBase::OutArgs<double> ModelEvaluator::createOutArgsImpl() c
   out.setSupports(Thyra::ModelEvaluatorBase::OUT_ARG_W_op);
   return std::move(out);
 }
+
+std::vector<int> ModelEvaluator::prescribedDofs() const { return assembler_.constraints().ownedConstrainedDofs(); }
 
 Teuchos::RCP<Thyra::LinearOpBase<double>> ModelEvaluator::create_W_op() const {
   Teuchos::RCP<Tpetra::Operator<Scalar, LocalOrdinal, GlobalOrdinal>> matrix;
@@ -88,7 +91,8 @@ void ModelEvaluator::evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<doubl
     beforeJacobian_();
   }
   if (f != Teuchos::null && reactions_.is_null()) reactions_ = Teuchos::rcp(new Vector(map_));
-  const auto status = assembler_.assemble(time_, *x, f.get(), jacobian, f != Teuchos::null ? reactions_.get() : nullptr);
+  const auto status =
+      assembler_.assemble(time_, *x, f.get(), jacobian, f != Teuchos::null ? reactions_.get() : nullptr, true);
   if (f != Teuchos::null) updateForceScale();
   // An inverted element makes this iterate meaningless: a NaN residual makes
   // NOX's FiniteValue test fail the step, and the stepper cuts back.
@@ -138,7 +142,7 @@ void ModelEvaluator::evalContact(const Vector& x, Vector* f, const Teuchos::RCP<
     if (bulkResidual_.is_null()) bulkResidual_ = Teuchos::rcp(new Vector(map_));
     const auto& comm = *map_->getComm();
     if (reactions_.is_null()) reactions_ = Teuchos::rcp(new Vector(map_));
-    const auto assembled = assembler_.assemble(time_, u, bulkResidual_.get(), nullptr, reactions_.get());
+    const auto assembled = assembler_.assemble(time_, u, bulkResidual_.get(), nullptr, reactions_.get(), true);
     const bool inverted = assembled.invertedElement;  // the same on every rank (Assembler::assemble)
     lastInvalid_ = inverted || anyRank(comm, !allFinite(*bulkResidual_));
     if (lastInvalid_) failure_ = inverted ? assembled.invertedMessage() : "the bulk residual is not finite";

@@ -63,6 +63,8 @@ public:
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_x_space() const override { return space_; }
   Teuchos::RCP<const Thyra::VectorSpaceBase<double>> get_f_space() const override { return space_; }
   Thyra::ModelEvaluatorBase::InArgs<double> getNominalValues() const override { return nominal_; }
+  /// Owned-local indices of the prescribed DoFs (their residual rows are u − ū).
+  std::vector<int> prescribedDofs() const;
   Teuchos::RCP<Thyra::LinearOpBase<double>> create_W_op() const override;
   Teuchos::RCP<const Thyra::LinearOpWithSolveFactoryBase<double>> get_W_factory() const override { return factory_; }
   Thyra::ModelEvaluatorBase::InArgs<double> createInArgs() const override;

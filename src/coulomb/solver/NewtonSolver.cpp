@@ -67,6 +67,7 @@ public:
       : NOX::Thyra::Group(source, type),
         forcing_(source.forcing_),
         reuse_(source.reuse_),
+        prescribed_(source.prescribed_),
         linearFailure_(source.linearFailure_) {}
   Teuchos::RCP<NOX::Abstract::Group> clone(NOX::CopyType type) const override {
     return Teuchos::rcp(new CountingGroup(*this, type));
@@ -74,6 +75,8 @@ public:
   int lastLinearIterations() const { return last_linear_solve_num_iters_; }
   void setForcing(std::shared_ptr<Forcing> forcing) { forcing_ = std::move(forcing); }
   void setPreconditionerReuse(std::shared_ptr<PreconditionerReuse> reuse) { reuse_ = std::move(reuse); }
+  /// The owned-local prescribed DoFs (DirichletConstraints::ownedConstrainedDofs).
+  void setPrescribedDofs(std::shared_ptr<const std::vector<int>> dofs) { prescribed_ = std::move(dofs); }
   /// Shared by the clones: why the first linear solve that threw failed
   /// (empty: none did).
   const std::shared_ptr<std::string>& linearFailure() const { return linearFailure_; }
@@ -93,7 +96,9 @@ public:
       ++reuse_->solves;
     }
     try {
-      return NOX::Thyra::Group::computeNewton(p);
+      const auto status = NOX::Thyra::Group::computeNewton(p);
+      exactPrescribedUpdate();  // also for a solve that missed its tolerance: NOX may still take the step
+      return status;
     } catch (const Thyra::CatastrophicSolveFailure& e) {
       // A Belos solve that throws (Thyra wraps Belos' errors in this: a NaN
       // in its residual norms, e.g. from a zero diagonal in the condensed
@@ -111,6 +116,23 @@ public:
   }
 
 private:
+  /// A prescribed DoF's row of the Jacobian is the identity's (the bulk
+  /// assembly makes it so, and no contact row is written there), so its
+  /// Newton update is -f exactly: u − ū
+  /// becomes zero in one step, whatever the Krylov solve left in these rows
+  /// (up to its tolerance, a length compared with forces). An iterate that
+  /// starts a step behind its boundary values (DirichletConstraints.hpp)
+  /// then carries them from its second iterate on.
+  void exactPrescribedUpdate() {
+    if (!prescribed_ || prescribed_->empty()) return;
+    using Extract = Thyra::TpetraOperatorVectorExtraction<Scalar, LocalOrdinal, GlobalOrdinal>;
+    auto direction = Extract::getTpetraVector(newton_vec_->getThyraRCPVector());
+    const auto f = Extract::getConstTpetraVector(f_vec_->getThyraRCPVector());
+    auto dx = direction->getDataNonConst(0);
+    const auto fData = f->getData(0);
+    for (int dof : *prescribed_) dx[dof] = -fData[dof];
+  }
+
   /// Whether this solve keeps the last built preconditioner. The tangent
   /// changes little while the contact set stays the same, and the setup
   /// (MueLu: a quarter of a contact iteration) is saved. It is no longer
@@ -157,6 +179,7 @@ private:
 
   std::shared_ptr<Forcing> forcing_;
   std::shared_ptr<PreconditionerReuse> reuse_;
+  std::shared_ptr<const std::vector<int>> prescribed_;
   std::shared_ptr<std::string> linearFailure_ = std::make_shared<std::string>();
 };
 
@@ -411,6 +434,7 @@ NewtonReport NewtonSolver::solve(Vector& u) {
     };
     group->setForcing(forcing);
   }
+  group->setPrescribedDofs(std::make_shared<const std::vector<int>>(model_->prescribedDofs()));
   std::shared_ptr<CountingGroup::PreconditionerReuse> reuse;
   if (settings_.reusePreconditioner && contact_ && !directSolver_) {
     reuse = std::make_shared<CountingGroup::PreconditionerReuse>();

@@ -365,16 +365,25 @@ RunSummary Simulation::run() {
       *console_ << "step " << deckStep << " of " << settings_.numberOfSteps << "  t = " << std::setprecision(6) << next
                 << "  (" << (subStep ? "sub-step, " : "") << "dt = " << next - time << ")  " << progress(time) << "\n";
     const auto stepStart = std::chrono::steady_clock::now();
-    auto attempt = [&](bool extrapolate) {
+    // `boundaryThroughTangent` ('Boundary Increment' = Tangent): the
+    // prescribed DoFs keep the predictor's values, and the first Newton step
+    // takes the rest of their increment through the tangent together with
+    // the interior (fem/DirichletConstraints.hpp), as a linear solve would.
+    // Imposed: the predictor carries ū, and the interior only follows from
+    // the second iterate on; a boundary increment that is not proportional
+    // to the last one (a rotation setting in) can invert the elements next
+    // to the boundary before it does.
+    auto attempt = [&](bool extrapolate, bool boundaryThroughTangent) {
       trial.assign(*displacement_);
       if (extrapolate) trial.update((next - time) / lastStep, lastIncrement, 1.0);
-      constraints.setPrescribedValues(next, trial);
+      if (!boundaryThroughTangent) constraints.setPrescribedValues(next, trial);
       solvers_->model->setTime(next);
       if (contact_) contact_->beginStep(steps.nominalStep());
       return solve(trial);
     };
     const bool extrapolate = settings_.extrapolate && lastStep > 0;
-    NewtonReport report = attempt(extrapolate);
+    const bool tangent = settings_.boundaryThroughTangent;
+    NewtonReport report = attempt(extrapolate, tangent);
     if (extrapolate && report.rejectedStart()) {
       // The extrapolated state could not be evaluated (it may fold a
       // contact face or invert an element): start from the last converged
@@ -383,7 +392,7 @@ RunSummary Simulation::run() {
         *console_ << "  the extrapolated predictor was rejected (" << report.failure
                   << "): starting the step from the last converged state\n";
       if (contact_) contact_->restoreStep();
-      report = attempt(false);
+      report = attempt(false, tangent);
     }
     stopIfInterrupted(time, next);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - stepStart).count();
