@@ -99,6 +99,15 @@ std::string deckXml(const std::string& meshFile, const std::string& material, co
   return out.str();
 }
 
+std::string neoHookeanXml(double youngsModulus, double poissonsRatio) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "<Parameter name=\"Model\" type=\"string\" value=\"Neo-Hookean\"/>"
+      << "<Parameter name=\"Young's Modulus\" type=\"double\" value=\"" << youngsModulus << "\"/>"
+      << "<Parameter name=\"Poisson's Ratio\" type=\"double\" value=\"" << poissonsRatio << "\"/>";
+  return out.str();
+}
+
 std::string dirichletXml(const std::string& name, const std::string& nodeSet, const std::string& component,
                          double value, const std::vector<double>& coefficients, const std::string& function) {
   std::ostringstream out;

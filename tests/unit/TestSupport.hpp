@@ -30,6 +30,8 @@ void writeDistortedCopy(const std::string& source, const std::string& target, do
 
 /// A deck: materials/blocks for one block "body", then `body` (more sublists).
 std::string deckXml(const std::string& meshFile, const std::string& material, const std::string& body);
+/// The material parameters of a compressible Neo-Hookean solid (deckXml's `material`).
+std::string neoHookeanXml(double youngsModulus, double poissonsRatio);
 std::string dirichletXml(const std::string& name, const std::string& nodeSet, const std::string& component,
                          double value, const std::vector<double>& coefficients = {}, const std::string& function = "ramp");
 

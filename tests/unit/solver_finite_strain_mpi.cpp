@@ -61,10 +61,7 @@ std::string rotationDeck(const std::string& name, int steps, int maximumCutbacks
           "<ParameterList name=\"Pseudo Block GMRES\"><Parameter name=\"Convergence Tolerance\" type=\"double\" value=\"1e-12\"/>"
           "<Parameter name=\"Maximum Iterations\" type=\"int\" value=\"1000\"/><Parameter name=\"Num Blocks\" type=\"int\" value=\"200\"/></ParameterList></ParameterList></ParameterList>"
           "</ParameterList></ParameterList>";
-  const std::string material =
-      "<Parameter name=\"Model\" type=\"string\" value=\"Neo-Hookean\"/>"
-      "<Parameter name=\"Young's Modulus\" type=\"double\" value=\"1000\"/>"
-      "<Parameter name=\"Poisson's Ratio\" type=\"double\" value=\"0.3\"/>";
+  const std::string material = neoHookeanXml(1000, 0.3);
   const std::string deck = dir + "/rotation.xml";
   writeOnRoot(deck, deckXml(mesh, material, body));
   return deck;
@@ -175,10 +172,7 @@ std::string twistDeck(const std::string& name, int steps, const std::string& bou
       std::to_string(steps) + "\"/><Parameter name=\"Maximum Cutbacks\" type=\"int\" value=\"0\"/>"
       "<Parameter name=\"Boundary Increment\" type=\"string\" value=\"" + boundaryIncrement + "\"/></ParameterList>"
       "<ParameterList name=\"Newton\"><Parameter name=\"Relative Tolerance\" type=\"double\" value=\"1e-10\"/></ParameterList>";
-  const std::string material =
-      "<Parameter name=\"Model\" type=\"string\" value=\"Neo-Hookean\"/>"
-      "<Parameter name=\"Young's Modulus\" type=\"double\" value=\"1000\"/>"
-      "<Parameter name=\"Poisson's Ratio\" type=\"double\" value=\"0.35\"/>";
+  const std::string material = neoHookeanXml(1000, 0.35);
   const std::string deck = dir + "/twist.xml";
   writeOnRoot(deck, deckXml(shippedMesh("block3d.e"), material, body));
   return deck;

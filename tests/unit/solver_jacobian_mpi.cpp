@@ -30,10 +30,7 @@ std::string twistedCubeDeck(const std::string& name, const std::string& mesh) {
       dirichletXml("twist x", "top", "x", 0.1, {0.0, -0.3, 0.0}) + dirichletXml("twist y", "top", "y", -0.05, {0.3, 0.0, 0.0}) +
       dirichletXml("pull", "top", "z", 0.2) +
       "</ParameterList><ParameterList name=\"Load Stepping\"><Parameter name=\"Number of Steps\" type=\"int\" value=\"2\"/></ParameterList>";
-  const std::string material =
-      "<Parameter name=\"Model\" type=\"string\" value=\"Neo-Hookean\"/>"
-      "<Parameter name=\"Young's Modulus\" type=\"double\" value=\"1000\"/>"
-      "<Parameter name=\"Poisson's Ratio\" type=\"double\" value=\"0.35\"/>";
+  const std::string material = neoHookeanXml(1000, 0.35);
   const std::string meshFile = dir + "/distorted.e";
   writeDistortedCopy(shippedMesh(mesh), meshFile, 0.2);
   const std::string deck = dir + "/twist.xml";
