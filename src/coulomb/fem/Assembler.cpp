@@ -96,11 +96,11 @@ struct Assembler::Impl {
 
   /// Element loop of one block; returns its first inverted element (0-based
   /// global number), or -1.
-  template <CellType T>
   ///
   /// `pending` (overlap, or null): ū − u on prescribed DoFs whose iterate lags
   /// behind the boundary values (DirichletConstraints.hpp); the elements
   /// touching one add k_fp (ū − u_p) to their free rows.
+  template <CellType T>
   long long assembleBlock(std::size_t b, double time, const double* u, double* r, const TangentTarget& K,
                           const double* pending) const {
     using Traits = CellTraits<T>;
@@ -380,6 +380,7 @@ AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residua
   // Prescribed DoFs behind their values (DirichletConstraints.hpp): only the
   // Newton residual carries their coupling; collective test, so every rank imports.
   Teuchos::ArrayRCP<const double> pendingData;
+  AssemblyStatus status;
   if (linearizeLaggingBoundary && residual) {
     if (m.ownedPending.is_null()) {
       m.ownedPending = Teuchos::rcp(new Vector(m.dofs.ownedMap()));
@@ -388,6 +389,7 @@ AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residua
     if (anyRank(*m.mesh.comm(), constraints_->pendingIncrements(time, u, *m.ownedPending))) {
       m.overlapPending->doImport(*m.ownedPending, *m.ownedToOverlap, Tpetra::INSERT);
       pendingData = m.overlapPending->getData(0);
+      status.boundaryLags = true;
     }
   }
   {
@@ -411,7 +413,6 @@ AssemblyStatus Assembler::assemble(double time, const Vector& u, Vector* residua
       }
     }
   }
-  AssemblyStatus status;
   long long lowest = inverted;
   Teuchos::reduceAll(*m.mesh.comm(), Teuchos::REDUCE_MIN, inverted, Teuchos::outArg(lowest));
   if (lowest != std::numeric_limits<long long>::max()) {

@@ -28,6 +28,9 @@ struct AssemblyStatus {
   /// number, -1 if none) and its block's name: the failure names them.
   long long invertedElementNumber = -1;
   std::string invertedBlock;
+  /// With linearizeLaggingBoundary: a prescribed DoF lagged behind ū on some
+  /// rank (the residual carries its linearised coupling, not its value).
+  bool boundaryLags = false;
   /// "element N of block 'B' is inverted (det F <= 0)", or "" if none is.
   std::string invertedMessage() const;
 };

@@ -87,7 +87,7 @@ bool DirichletConstraints::pendingIncrements(double time, const Vector& ownedU, 
   ownedPending.putScalar(0.0);
   auto u = ownedU.getData(0);
   auto pending = ownedPending.getDataNonConst(0);
-  // In deck order, as setPrescribedValues: a later condition on the same DoF wins.
+  // One entry per DoF (the constructor keeps the later of two conditions on it).
   for (const auto& p : owned_) {
     const double target = prescribed(p, time), now = u[p.ownedLocalDof];
     // An iterate that carries ū up to rounding (u + (ū − u) need not be ū

@@ -62,10 +62,12 @@ Teuchos::RCP<Thyra::LinearOpBase<double>> ModelEvaluator::create_W_op() const {
     for (GlobalOrdinal gid : map->getNodeElementList()) identity.push_back({gid, gid, 1.0});
     matrix = linalg::matrixFromTriplets(identity, map);
   } else if (contact_ && !contact_->tangentStorage().is_null()) {
-    // Condensed contact: evalContact puts the condensed tangent in before any
-    // use, so the last one (the previous load step's) holds the place; a new
-    // K-sized matrix here, zero-filled and never read, was 5 % of the peak
-    // memory of a quadratic Hertz run (HEX20, 36k DoFs: 400 -> 380 MB).
+    // Condensed contact: evalContact puts the condensed tangent in at the
+    // first Jacobian, before any solve (NOX asks for none at a rejected
+    // iterate: its NaN residual fails the step first), so the last one (of
+    // the previous step or attempt) holds the place; a new K-sized matrix
+    // here, zero-filled and never read, was 5 % of the peak memory of a
+    // quadratic Hertz run (HEX20, 36k DoFs: 400 -> 380 MB).
     matrix = contact_->tangentStorage();
   } else {
     matrix = assembler_.createMatrix();
@@ -91,8 +93,9 @@ void ModelEvaluator::evalModelImpl(const Thyra::ModelEvaluatorBase::InArgs<doubl
     beforeJacobian_();
   }
   if (f != Teuchos::null && reactions_.is_null()) reactions_ = Teuchos::rcp(new Vector(map_));
-  const auto status =
-      assembler_.assemble(time_, *x, f.get(), jacobian, f != Teuchos::null ? reactions_.get() : nullptr, true);
+  const auto status = assembler_.assemble(time_, *x, f.get(), jacobian, f != Teuchos::null ? reactions_.get() : nullptr,
+                                          linearizeLaggingBoundary_);
+  if (f != Teuchos::null) boundaryLags_ = status.boundaryLags;
   if (f != Teuchos::null) updateForceScale();
   // An inverted element makes this iterate meaningless: a NaN residual makes
   // NOX's FiniteValue test fail the step, and the stepper cuts back.
@@ -142,7 +145,9 @@ void ModelEvaluator::evalContact(const Vector& x, Vector* f, const Teuchos::RCP<
     if (bulkResidual_.is_null()) bulkResidual_ = Teuchos::rcp(new Vector(map_));
     const auto& comm = *map_->getComm();
     if (reactions_.is_null()) reactions_ = Teuchos::rcp(new Vector(map_));
-    const auto assembled = assembler_.assemble(time_, u, bulkResidual_.get(), nullptr, reactions_.get(), true);
+    const auto assembled =
+        assembler_.assemble(time_, u, bulkResidual_.get(), nullptr, reactions_.get(), linearizeLaggingBoundary_);
+    boundaryLags_ = assembled.boundaryLags;
     const bool inverted = assembled.invertedElement;  // the same on every rank (Assembler::assemble)
     lastInvalid_ = inverted || anyRank(comm, !allFinite(*bulkResidual_));
     if (lastInvalid_) failure_ = inverted ? assembled.invertedMessage() : "the bulk residual is not finite";

@@ -46,6 +46,14 @@ public:
   /// K is recovered from the last tangent instead of assembled (the same
   /// values bit for bit; 'Newton/Reuse Constant Tangent', default true).
   void reuseConstantTangent(bool reuse) { reuseConstantTangent_ = reuse; }
+  /// 'Load Stepping/Boundary Increment' = Tangent: Newton residuals carry
+  /// the linearised coupling of prescribed DoFs that lag behind ū
+  /// (fem::Assembler::assemble, linearizeLaggingBoundary).
+  void linearizeLaggingBoundary(bool on) { linearizeLaggingBoundary_ = on; }
+  /// The last evaluated residual had a prescribed DoF behind ū (the same on
+  /// every rank): it is not the residual of that iterate, which must not
+  /// count as converged (NewtonSolver).
+  bool boundaryLags() const { return boundaryLags_; }
   /// Why the last rejected iterate could not be evaluated (an inverted
   /// element, a contact geometry failure, a non-finite residual), or empty
   /// when none was rejected since clearFailure(). A rejected iterate gets a
@@ -84,6 +92,8 @@ private:
   contact::ContactModel* contact_ = nullptr;
   // Contact: the iterate whose state is current, its bulk residual, the bulk tangent.
   bool reuseConstantTangent_ = true;
+  bool linearizeLaggingBoundary_ = false;
+  mutable bool boundaryLags_ = false;
   bool saddlePoint_ = false;  ///< contact in the saddle-point form: x = (u, z) on ContactModel::saddlePointMap()
   mutable Teuchos::RCP<Vector> lastX_, bulkResidual_, displacement_;
   mutable Teuchos::RCP<CrsMatrix> bulkTangent_;

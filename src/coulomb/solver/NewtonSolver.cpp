@@ -256,6 +256,28 @@ private:
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
+/// Not converged while the last residual had prescribed DoFs behind ū
+/// ('Boundary Increment' = Tangent): that residual holds their linearised
+/// coupling, and a step must not end before the first Newton update puts
+/// them in place, however small the lag.
+class BoundaryInPlaceTest : public NOX::StatusTest::Generic {
+public:
+  explicit BoundaryInPlaceTest(const ModelEvaluator& model) : model_(model) {}
+  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic&, NOX::StatusTest::CheckType) override {
+    status_ = model_.boundaryLags() ? NOX::StatusTest::Unconverged : NOX::StatusTest::Converged;
+    return status_;
+  }
+  NOX::StatusTest::StatusType getStatus() const override { return status_; }
+  std::ostream& print(std::ostream& stream, int indent) const override {
+    for (int i = 0; i < indent; ++i) stream << ' ';
+    return stream << status_ << " prescribed values in place\n";
+  }
+
+private:
+  const ModelEvaluator& model_;
+  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
+};
+
 /// Fails the solve when the contact sets cycle (ActiveSetCycle.hpp): the
 /// step is cut back at once instead of at the iteration limit.
 class ActiveSetCycleTest : public NOX::StatusTest::Generic {
@@ -453,6 +475,7 @@ NewtonReport NewtonSolver::solve(Vector& u) {
   else
     converged->addStatusTest(residualTest = Teuchos::rcp(new ScaledResidualTest(*model_, settings_, group->getNormF())));
   if (contact_) converged->addStatusTest(Teuchos::rcp(new ContactStatusTest(*contact_)));
+  converged->addStatusTest(Teuchos::rcp(new BoundaryInPlaceTest(*model_)));
   auto tests = Teuchos::rcp(new Combo(Combo::OR));
   tests->addStatusTest(Teuchos::rcp(new FiniteValue));
   tests->addStatusTest(converged);

@@ -127,6 +127,7 @@ Simulation::Simulation(const std::string& deckPath, const Teuchos::RCP<const Teu
                                                     [s] { setMueLuUserData(s->linear, s->nullspace, s->coordinates, &s->vertices); },
                                                     contact_.get()));
   solvers_->model->reuseConstantTangent(settings_.reuseConstantTangent);
+  solvers_->model->linearizeLaggingBoundary(settings_.boundaryThroughTangent);
   // The iteration table is for --verbose (setVerbosity).
   solvers_->newton = std::make_unique<NewtonSolver>(solvers_->model, settings_.nonlinearSolver, settings_.newton,
                                                     nullptr, contact_.get());
@@ -365,7 +366,7 @@ RunSummary Simulation::run() {
       *console_ << "step " << deckStep << " of " << settings_.numberOfSteps << "  t = " << std::setprecision(6) << next
                 << "  (" << (subStep ? "sub-step, " : "") << "dt = " << next - time << ")  " << progress(time) << "\n";
     const auto stepStart = std::chrono::steady_clock::now();
-    // `boundaryThroughTangent` ('Boundary Increment' = Tangent): the
+    // 'Boundary Increment' = Tangent (settings_.boundaryThroughTangent): the
     // prescribed DoFs keep the predictor's values, and the first Newton step
     // takes the rest of their increment through the tangent together with
     // the interior (fem/DirichletConstraints.hpp), as a linear solve would.
@@ -373,17 +374,16 @@ RunSummary Simulation::run() {
     // the second iterate on; a boundary increment that is not proportional
     // to the last one (a rotation setting in) can invert the elements next
     // to the boundary before it does.
-    auto attempt = [&](bool extrapolate, bool boundaryThroughTangent) {
+    auto attempt = [&](bool extrapolate) {
       trial.assign(*displacement_);
       if (extrapolate) trial.update((next - time) / lastStep, lastIncrement, 1.0);
-      if (!boundaryThroughTangent) constraints.setPrescribedValues(next, trial);
+      if (!settings_.boundaryThroughTangent) constraints.setPrescribedValues(next, trial);
       solvers_->model->setTime(next);
       if (contact_) contact_->beginStep(steps.nominalStep());
       return solve(trial);
     };
     const bool extrapolate = settings_.extrapolate && lastStep > 0;
-    const bool tangent = settings_.boundaryThroughTangent;
-    NewtonReport report = attempt(extrapolate, tangent);
+    NewtonReport report = attempt(extrapolate);
     if (extrapolate && report.rejectedStart()) {
       // The extrapolated state could not be evaluated (it may fold a
       // contact face or invert an element): start from the last converged
@@ -392,7 +392,7 @@ RunSummary Simulation::run() {
         *console_ << "  the extrapolated predictor was rejected (" << report.failure
                   << "): starting the step from the last converged state\n";
       if (contact_) contact_->restoreStep();
-      report = attempt(false, tangent);
+      report = attempt(false);
     }
     stopIfInterrupted(time, next);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - stepStart).count();
