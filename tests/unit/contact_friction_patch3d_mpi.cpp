@@ -67,6 +67,21 @@ TEST(FrictionPatch, ThreeDimensionalStickIsExactAndSlipCarriesMuP) {
     if (state[i] > 0.5) EXPECT_GT(slipX[i], 0.5 * s) << "node " << i + 1;
 }
 
+// The same stick with Load Stepping/Boundary Increment = Tangent: the top's
+// prescribed displacement and shear reach the contact through the first
+// Newton step's linear solve (fem/DirichletConstraints.hpp) instead of the
+// imposed values; the answer is the same homogeneous state.
+TEST(FrictionPatch, ThreeDimensionalStickIsExactWithTheBoundaryIncrementThroughTheTangent) {
+  std::string text = stickPatch3dDeck("contact_patch3d.e");
+  const std::string stepping = "<ParameterList name=\"Load Stepping\">";
+  const auto at = text.find(stepping);
+  ASSERT_NE(at, std::string::npos);
+  text.insert(at + stepping.size(), "<Parameter name=\"Boundary Increment\" type=\"string\" value=\"Tangent\"/>");
+  auto stick = runDeckText("friction_patch_3d_stick_tangent", text);
+  EXPECT_LT(stickPatch3dError(*stick.simulation), 1e-8 * 0.01);
+  EXPECT_EQ(stick.simulation->settings().boundaryThroughTangent, true);
+}
+
 // The same 3D stick on matching meshes (3 x 3 punch faces on 3 x 3 base
 // faces): every slave edge lies on a master edge, the clipping's degenerate
 // case. Its second step starts at equilibrium (the response is linear); with
