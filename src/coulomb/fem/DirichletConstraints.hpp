@@ -10,7 +10,8 @@
 /// from the predictor's: an iterate whose prescribed DoFs lag behind ū gets
 /// the coupling K_fp (ū − u_p) of that lag added to its free rows by the
 /// assembler, so the first Newton step takes the boundary increment
-/// through the tangent instead of the dropped columns. Where two conditions constrain the same DoF, the later one in the deck wins.
+/// through the tangent instead of the dropped columns. Where two conditions
+/// constrain the same DoF, the later one in the deck wins.
 #include <vector>
 
 #include "coulomb/core/TpetraTypes.hpp"
