@@ -8,6 +8,7 @@
 #include <iomanip>
 #include <memory>
 #include <sstream>
+#include <string>
 
 #include <NOX_Observer.hpp>
 #include <NOX_Solver_Factory.H>
@@ -236,65 +237,29 @@ private:
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
-/// Contact part of the convergence test: the active set did not change at
-/// the current iterate and the normal constraint residual is small.
-class ContactStatusTest : public NOX::StatusTest::Generic {
+/// A NOX status test read off a condition of the model: `whenMet` while
+/// `condition()` holds, `otherwise` else. The contact and boundary parts of
+/// the convergence test and the cycle test are such conditions (below, at
+/// the Combo that holds them).
+class ConditionTest : public NOX::StatusTest::Generic {
 public:
-  explicit ContactStatusTest(const contact::ContactModel& contact) : contact_(contact) {}
+  ConditionTest(std::function<bool()> condition, NOX::StatusTest::StatusType whenMet,
+                NOX::StatusTest::StatusType otherwise, std::string label)
+      : condition_(std::move(condition)), whenMet_(whenMet), otherwise_(otherwise), label_(std::move(label)) {}
   NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic&, NOX::StatusTest::CheckType) override {
-    status_ = contact_.converged() ? NOX::StatusTest::Converged : NOX::StatusTest::Unconverged;
+    status_ = condition_() ? whenMet_ : otherwise_;
     return status_;
   }
   NOX::StatusTest::StatusType getStatus() const override { return status_; }
   std::ostream& print(std::ostream& stream, int indent = 0) const override {
     for (int i = 0; i < indent; ++i) stream << ' ';
-    return stream << status_ << " contact: active set unchanged and normal residual converged\n";
+    return stream << status_ << " " << label_ << "\n";
   }
 
 private:
-  const contact::ContactModel& contact_;
-  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
-};
-
-/// Not converged while the last residual had prescribed DoFs behind ū
-/// ('Boundary Increment' = Tangent): that residual holds their linearised
-/// coupling, and a step must not end before the first Newton update puts
-/// them in place, however small the lag.
-class BoundaryInPlaceTest : public NOX::StatusTest::Generic {
-public:
-  explicit BoundaryInPlaceTest(const ModelEvaluator& model) : model_(model) {}
-  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic&, NOX::StatusTest::CheckType) override {
-    status_ = model_.boundaryLags() ? NOX::StatusTest::Unconverged : NOX::StatusTest::Converged;
-    return status_;
-  }
-  NOX::StatusTest::StatusType getStatus() const override { return status_; }
-  std::ostream& print(std::ostream& stream, int indent) const override {
-    for (int i = 0; i < indent; ++i) stream << ' ';
-    return stream << status_ << " prescribed values in place\n";
-  }
-
-private:
-  const ModelEvaluator& model_;
-  NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
-};
-
-/// Fails the solve when the contact sets cycle (ActiveSetCycle.hpp): the
-/// step is cut back at once instead of at the iteration limit.
-class ActiveSetCycleTest : public NOX::StatusTest::Generic {
-public:
-  explicit ActiveSetCycleTest(const contact::ContactModel& contact) : contact_(contact) {}
-  NOX::StatusTest::StatusType checkStatus(const NOX::Solver::Generic&, NOX::StatusTest::CheckType) override {
-    status_ = contact_.cyclePeriod() > 0 ? NOX::StatusTest::Failed : NOX::StatusTest::Unconverged;
-    return status_;
-  }
-  NOX::StatusTest::StatusType getStatus() const override { return status_; }
-  std::ostream& print(std::ostream& stream, int indent) const override {
-    for (int i = 0; i < indent; ++i) stream << ' ';
-    return stream << status_ << " active-set cycle\n";
-  }
-
-private:
-  const contact::ContactModel& contact_;
+  std::function<bool()> condition_;
+  NOX::StatusTest::StatusType whenMet_, otherwise_;
+  std::string label_;
   NOX::StatusTest::StatusType status_ = NOX::StatusTest::Unevaluated;
 };
 
@@ -474,13 +439,29 @@ NewtonReport NewtonSolver::solve(Vector& u) {
                                                                        contact_->settings().incrementAbsoluteTolerance)));
   else
     converged->addStatusTest(residualTest = Teuchos::rcp(new ScaledResidualTest(*model_, settings_, group->getNormF())));
-  if (contact_) converged->addStatusTest(Teuchos::rcp(new ContactStatusTest(*contact_)));
-  converged->addStatusTest(Teuchos::rcp(new BoundaryInPlaceTest(*model_)));
+  const contact::ContactModel* contact = contact_;
+  const ModelEvaluator* model = model_.get();
+  // Contact: the active set did not change at the current iterate and the
+  // normal constraint residual is small.
+  if (contact)
+    converged->addStatusTest(Teuchos::rcp(new ConditionTest([contact] { return contact->converged(); }, Converged,
+                                                            Unconverged,
+                                                            "contact: active set unchanged and normal residual converged")));
+  // Not converged while the last residual had prescribed DoFs behind ū
+  // ('Boundary Increment' = Tangent): that residual holds their linearised
+  // coupling, and a step must not end before the first Newton update puts
+  // them in place, however small the lag.
+  converged->addStatusTest(Teuchos::rcp(new ConditionTest([model] { return !model->boundaryLags(); }, Converged,
+                                                          Unconverged, "prescribed values in place")));
   auto tests = Teuchos::rcp(new Combo(Combo::OR));
   tests->addStatusTest(Teuchos::rcp(new FiniteValue));
   tests->addStatusTest(converged);
   tests->addStatusTest(Teuchos::rcp(new MaxIters(settings_.maximumIterations)));
-  if (contact_) tests->addStatusTest(Teuchos::rcp(new ActiveSetCycleTest(*contact_)));
+  // The contact sets cycle (ActiveSetCycle.hpp): the step is cut back at
+  // once instead of at the iteration limit.
+  if (contact)
+    tests->addStatusTest(Teuchos::rcp(new ConditionTest([contact] { return contact->cyclePeriod() > 0; }, Failed,
+                                                        Unconverged, "active-set cycle")));
   tests->addStatusTest(Teuchos::rcp(new InterruptTest(u.getMap()->getComm())));
 
   NewtonReport report;
