@@ -103,8 +103,8 @@ FacePoint<F, T> invertPlaneMap(const PlaneNodes<F, T>& pn, const Point2<T>& p) {
     PlaneNodes<F, double> nd;
     for (int a = 0; a < 4; ++a) nd[a] = {valueOf(pn[a][0]), valueOf(pn[a][1])};
     const Point2<double> pd{valueOf(p[0]), valueOf(p[1])};
-    const double size = std::hypot(nd[2][0] - nd[0][0], nd[2][1] - nd[0][1]) +
-                        std::hypot(nd[3][0] - nd[1][0], nd[3][1] - nd[1][1]);
+    const double size = planeNorm(nd[2][0] - nd[0][0], nd[2][1] - nd[0][1]) +
+                        planeNorm(nd[3][0] - nd[1][0], nd[3][1] - nd[1][1]);
     // Damped Newton from the centre: a step is at most 0.5 in xi and is
     // halved until |F| decreases, so an iterate never jumps far outside the
     // face where the bilinear map folds. Points are inside the (convex)
@@ -113,7 +113,7 @@ FacePoint<F, T> invertPlaneMap(const PlaneNodes<F, T>& pn, const Point2<T>& p) {
     std::array<double, 2> Fd{};
     std::array<std::array<double, 2>, 2> Jd{};
     residual(nd, pd, xi, Fd, Jd);
-    double norm = std::hypot(Fd[0], Fd[1]);
+    double norm = planeNorm(Fd[0], Fd[1]);
     bool converged = false;
     for (int it = 0; it < 50 && !converged; ++it) {
       const double det = Jd[0][0] * Jd[1][1] - Jd[0][1] * Jd[1][0];
@@ -126,12 +126,12 @@ FacePoint<F, T> invertPlaneMap(const PlaneNodes<F, T>& pn, const Point2<T>& p) {
       converged = std::abs(d0) + std::abs(d1) <= 1e-14 * (1.0 + std::abs(xi[0]) + std::abs(xi[1]));
       FacePoint<F, double> trial{xi[0] - d0, xi[1] - d1};
       residual(nd, pd, trial, Fd, Jd);
-      double trialNorm = std::hypot(Fd[0], Fd[1]);
+      double trialNorm = planeNorm(Fd[0], Fd[1]);
       for (int halving = 0; halving < 20 && !converged && !(trialNorm < norm); ++halving) {
         d0 *= 0.5, d1 *= 0.5;
         trial = {xi[0] - d0, xi[1] - d1};
         residual(nd, pd, trial, Fd, Jd);
-        trialNorm = std::hypot(Fd[0], Fd[1]);
+        trialNorm = planeNorm(Fd[0], Fd[1]);
       }
       xi = trial;
       norm = trialNorm;

@@ -22,7 +22,7 @@ T edgeCross(const Point2<T>& a, const Point2<T>& b, const Point2<T>& p) {
 }
 
 double distance(const Point2<double>& a, const Point2<double>& b) {
-  return std::hypot(a[0] - b[0], a[1] - b[1]);
+  return planeNorm(a[0] - b[0], a[1] - b[1]);
 }
 
 template <typename T>
