@@ -229,6 +229,57 @@ TEST(TripletAssembly, MatrixSumReusesTheMatrixWhenThePatternRepeats) {
   expectSum(eighth, sameColumns);
 }
 
+// MatrixSum leaves out what cannot change a product with the sum: exact
+// zeros and values at most 1e-14 of their row's largest K entry (the
+// interface rows of a contact tangent carry many; each one in a new column
+// grew the pattern, and at np > 1 the column map). The pattern then repeats
+// and the matrix is reused; a small but resolvable value (1e-6 of the row)
+// still enters.
+TEST(TripletAssembly, MatrixSumLeavesOutNegligibleNewEntries) {
+  auto comm = worldComm();
+  const GlobalOrdinal n = 4 * comm->getSize() + 3;
+  auto map = Teuchos::rcp(new Map(static_cast<Tpetra::global_size_t>(n), 0, comm));
+  auto K = linalg::matrixFromTriplets(bidiagonal(*map), map);  // rows' largest entry: 3
+  const Vector x = cosineVector(map, 0.7);
+  linalg::MatrixSum sum;
+  const auto s1 = shiftedFromLastRank(*map, 1.0, n / 2);
+  auto first = sum.add(*K, s1);
+  const auto entries = first->getGlobalNumEntries();
+  // s1's values again, plus zeros and 1e-20 x 3 in yet other columns.
+  auto withNegligible = [&](double tiny) {
+    std::vector<linalg::MatrixTriplet> s = s1;
+    for (const auto& t : shiftedFromLastRank(*map, 0.0, n / 2 + 1)) s.push_back(t);
+    for (auto t : shiftedFromLastRank(*map, 1.0, n / 2 + 2)) {
+      t.value = tiny * 3.0;
+      s.push_back(t);
+    }
+    return s;
+  };
+  const auto s2 = withNegligible(1e-20);
+  auto second = sum.add(*K, s2);
+  EXPECT_EQ(second.get(), first.get());
+  EXPECT_EQ(sum.reuses(), 1);
+  EXPECT_EQ(second->getGlobalNumEntries(), entries);
+  Vector expected(map), part(map), actual(map);
+  K->apply(x, expected);
+  linalg::matrixFromTriplets(s2, map)->apply(x, part);
+  expected.update(1.0, part, 1.0);
+  second->apply(x, actual);
+  actual.update(-1.0, expected, 1.0);
+  EXPECT_LT(actual.normInf(), 1e-13);
+  // 1e-6 of the row is kept: one new entry per row (the zeros still left out).
+  const auto s3 = withNegligible(1e-6);
+  auto third = sum.add(*K, s3);
+  EXPECT_EQ(sum.reuses(), 1);
+  EXPECT_EQ(third->getGlobalNumEntries(), entries + static_cast<Tpetra::global_size_t>(n));
+  K->apply(x, expected);
+  linalg::matrixFromTriplets(s3, map)->apply(x, part);
+  expected.update(1.0, part, 1.0);
+  third->apply(x, actual);
+  actual.update(-1.0, expected, 1.0);
+  EXPECT_LT(actual.normInf(), 1e-13);
+}
+
 // MatrixSum with K = its last result, refilled by the caller (the model
 // evaluator assembles the next K into the last J): the same pattern is
 // completed in the same matrix; a grown one (new entries, new columns at np >

@@ -1,6 +1,7 @@
 #include "coulomb/linalg/TripletAssembly.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <string>
 #include <unordered_map>
@@ -14,6 +15,14 @@
 #include "coulomb/core/Parallel.hpp"
 
 namespace coulomb::linalg {
+
+/// A triplet is left out when it is at most this fraction of its row's
+/// largest entry in K (some hundred units of round-off of that entry): the
+/// tangent it would refine is solved to 1e-3 .. 1e-10 relative, so no
+/// Newton iterate can tell. Exact zeros are left out whatever the row. The
+/// entries this leaves out in practice are 1e-20 to 1e-45 of their rows
+/// (MatrixSum::add).
+constexpr double kNegligibleEntry = 1e-14;
 
 namespace {
 
@@ -201,13 +210,40 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
     extra.emplace(column, c);
     return c;
   };
+  // K's compressed rows, read directly (Serial node: the device view is host memory).
+  const auto localK = K.getLocalMatrixDevice();
+  const auto kRows = localK.graph.row_map;
+  const auto kEntries = localK.graph.entries;
+  const auto kValues = localK.values;
   // This rank's triplets (its own, then those received) grouped by local
   // row (counting sort) as (local column, value), each row sorted by column.
+  // Negligible ones are left out (kNegligibleEntry), before they can add a
+  // column: the interface rows (T - I) K are formed over K's whole pattern,
+  // whose dead couplings are explicit zeros (the pattern only grows in
+  // place), and the contact derivatives hold values of 1e-20 to 1e-45 of
+  // their row; each of them in a new column grew the pattern at every
+  // iterate, by one more ring of nodes (HEX20 hertz3d --ref 1: 300 to 77000
+  // new entries per iterate with the set unchanged), and each growth was a
+  // K-sized rewrite and a new preconditioner.
   const std::size_t numRows = rowMap->getNodeNumElements();
+  std::vector<double> negligible(numRows, -1.0);  // per row, once it is needed
+  auto kept = [&](LocalOrdinal row, double value) {
+    double& bound = negligible[static_cast<std::size_t>(row)];
+    if (bound < 0.0) {
+      double scale = 0.0;  // the row's largest entry in K
+      for (auto k = kRows(row); k < kRows(row + 1); ++k) scale = std::max(scale, std::abs(kValues(k)));
+      bound = kNegligibleEntry * scale;
+    }
+    return std::abs(value) > bound;
+  };
+  std::vector<char> keep(triplets.size() + routed.received.size(), 0);
   std::vector<std::size_t> start(numRows + 1, 0);
   for (std::size_t i = 0; i < triplets.size(); ++i)
-    if (routed.localRow[i] != RowLookup::invalid()) ++start[routed.localRow[i] + 1];
-  for (const auto row : routed.receivedRow) ++start[row + 1];
+    if (routed.localRow[i] != RowLookup::invalid() && (keep[i] = kept(routed.localRow[i], triplets[i].value)))
+      ++start[routed.localRow[i] + 1];
+  for (std::size_t i = 0; i < routed.received.size(); ++i)
+    if ((keep[triplets.size() + i] = kept(routed.receivedRow[i], routed.received[i].value)))
+      ++start[routed.receivedRow[i] + 1];
   for (std::size_t r = 0; r < numRows; ++r) start[r + 1] += start[r];
   const std::size_t n = start[numRows];
   lastTriplets_ = n;
@@ -215,21 +251,16 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
   {
     std::vector<std::size_t> cursor(start.begin(), start.end() - 1);
     for (std::size_t i = 0; i < triplets.size(); ++i)
-      if (routed.localRow[i] != RowLookup::invalid())
-        grouped[cursor[routed.localRow[i]]++] = {localColumnOf(triplets[i].column), triplets[i].value};
+      if (keep[i]) grouped[cursor[routed.localRow[i]]++] = {localColumnOf(triplets[i].column), triplets[i].value};
     for (std::size_t i = 0; i < routed.received.size(); ++i)
-      grouped[cursor[routed.receivedRow[i]]++] = {localColumnOf(routed.received[i].column), routed.received[i].value};
+      if (keep[triplets.size() + i])
+        grouped[cursor[routed.receivedRow[i]]++] = {localColumnOf(routed.received[i].column), routed.received[i].value};
   }
   for (std::size_t r = 0; r < numRows; ++r)
     if (start[r + 1] - start[r] > 1)
       std::stable_sort(grouped.begin() + static_cast<std::ptrdiff_t>(start[r]), grouped.begin() + static_cast<std::ptrdiff_t>(start[r + 1]),
                 [](const auto& a, const auto& b) { return a.first < b.first; });
 
-  // K's compressed rows, read directly (Serial node: the device view is host memory).
-  const auto localK = K.getLocalMatrixDevice();
-  const auto kRows = localK.graph.row_map;
-  const auto kEntries = localK.graph.entries;
-  const auto kValues = localK.values;
   // K's rows that get triplets, kept for restoreBase() before anything is
   // written (in place, K is the buffers about to be overwritten). K's local
   // columns are the result's too: its column map starts with K's.

@@ -40,6 +40,8 @@ Teuchos::RCP<CrsMatrix> matrixFromTriplets(const std::vector<MatrixTriplet>& tri
 
 /// @brief Collective: the matrix K + (sum of every rank's `triplets`), with
 /// K's row, domain and range maps; K must be fill-complete and its rows sorted.
+/// A triplet of at most 1e-14 of its row's largest entry in K (an exact zero
+/// among them) is left out: it would add pattern, not a value.
 /// Built directly in compressed-row form (K's column map extended by the new
 /// columns, each row K's entries in order then the new ones sorted): a
 /// general sparse sum (Tpetra::MatrixMatrix::add) sorts every row and costs
