@@ -56,6 +56,7 @@ struct NewtonIteration {
   double normalRatio = 0;   ///< normalResidual / ||contact forces||
   bool contactConverged = false;
   bool preconditionerReused = false;  ///< the solve of this row's step kept the last preconditioner
+  bool coarseLevelKept = false;  ///< ... or only its corner level (P-Multigrid, PMultigridFactory::keepCoarseLevel)
 };
 
 struct NewtonReport {
@@ -68,6 +69,7 @@ struct NewtonReport {
   std::vector<NewtonIteration> iterations;  ///< row 0: the initial residual
   int linearIterations() const;
   int preconditionerReuses() const;
+  int coarseLevelReuses() const;
   /// The step's first iterate (the predictor) could not be evaluated.
   bool rejectedStart() const { return !converged && !failure.empty() && iterations.size() <= 1; }
 };

@@ -25,20 +25,30 @@ using Relaxation = Ifpack2::Relaxation<RowMatrix>;
 /// One two-level cycle (the header): Tpetra operator z = M^-1 r.
 class PMultigridOperator : public Operator {
 public:
-  PMultigridOperator(const Teuchos::RCP<const CrsMatrix>& A, const Teuchos::ParameterList& parameters) : A_(A) {
+  /// A new cycle on A; with `keepCoarseFrom`, the corner level of that
+  /// cycle (its P and MueLu hierarchy) is used as it is, and only the
+  /// smoothers are made on A.
+  PMultigridOperator(const Teuchos::RCP<const CrsMatrix>& A, const Teuchos::ParameterList& parameters,
+                     const PMultigridOperator* keepCoarseFrom)
+      : A_(A) {
     static const auto timer = Teuchos::TimeMonitor::getNewCounter("Coulomb: p-multigrid setup");
     Teuchos::TimeMonitor scope(*timer);
-    P_ = parameters.get<Teuchos::RCP<CrsMatrix>>("Prolongator");
-    COULOMB_CHECK(!P_.is_null() && P_->getRangeMap()->isSameAs(*A->getRangeMap()),
-                  "P-Multigrid: the prolongator's rows are the system's DoFs");
-    // P^T A P, the operator of the linear mesh on the corner nodes.
-    auto coarse = Teuchos::rcp(new CrsMatrix(P_->getDomainMap(), 0));
-    Tpetra::TripleMatrixMultiply::MultiplyRAP(*P_, true, *A, false, *P_, false, *coarse);
-    Teuchos::ParameterList muelu = parameters.sublist("Coarse MueLu");
-    muelu.sublist("user data").set("Nullspace", parameters.get<Teuchos::RCP<MultiVector>>("Coarse Nullspace"));
-    muelu.sublist("user data").set("Coordinates", parameters.get<Teuchos::RCP<MultiVector>>("Coarse Coordinates"));
-    coarse_ = MueLu::CreateTpetraPreconditioner<double, LocalOrdinal, GlobalOrdinal, CrsMatrix::node_type>(
-        Teuchos::RCP<Operator>(coarse), muelu);
+    if (keepCoarseFrom != nullptr) {
+      P_ = keepCoarseFrom->P_;
+      coarse_ = keepCoarseFrom->coarse_;
+    } else {
+      P_ = parameters.get<Teuchos::RCP<CrsMatrix>>("Prolongator");
+      COULOMB_CHECK(!P_.is_null() && P_->getRangeMap()->isSameAs(*A->getRangeMap()),
+                    "P-Multigrid: the prolongator's rows are the system's DoFs");
+      // P^T A P, the operator of the linear mesh on the corner nodes.
+      auto coarse = Teuchos::rcp(new CrsMatrix(P_->getDomainMap(), 0));
+      Tpetra::TripleMatrixMultiply::MultiplyRAP(*P_, true, *A, false, *P_, false, *coarse);
+      Teuchos::ParameterList muelu = parameters.sublist("Coarse MueLu");
+      muelu.sublist("user data").set("Nullspace", parameters.get<Teuchos::RCP<MultiVector>>("Coarse Nullspace"));
+      muelu.sublist("user data").set("Coordinates", parameters.get<Teuchos::RCP<MultiVector>>("Coarse Coordinates"));
+      coarse_ = MueLu::CreateTpetraPreconditioner<double, LocalOrdinal, GlobalOrdinal, CrsMatrix::node_type>(
+          Teuchos::RCP<Operator>(coarse), muelu);
+    }
     auto smoother = [&](const char* name, bool zeroStart) {
       auto relaxation = Teuchos::rcp(new Relaxation(A));
       Teuchos::ParameterList list = parameters.sublist(name);
@@ -110,7 +120,17 @@ void PMultigridFactory::initializePrec(const Teuchos::RCP<const Thyra::LinearOpS
   COULOMB_CHECK(!A.is_null(), "P-Multigrid: the operator is a Tpetra::CrsMatrix");
   auto* target = dynamic_cast<Thyra::DefaultPreconditioner<double>*>(prec);
   COULOMB_CHECK(target != nullptr, "P-Multigrid: a Thyra::DefaultPreconditioner");
-  Teuchos::RCP<Operator> op = Teuchos::rcp(new PMultigridOperator(A, *parameters_));
+  // The cycle this preconditioner holds now, if any (NOX passes the same
+  // object at every setup), for its corner level.
+  const PMultigridOperator* last = nullptr;
+  if (keepCoarseLevel_) {
+    using ThyraOp = Thyra::TpetraLinearOp<double, LocalOrdinal, GlobalOrdinal, CrsMatrix::node_type>;
+    const auto held = Teuchos::rcp_dynamic_cast<const ThyraOp>(target->getUnspecifiedPrecOp());
+    if (!held.is_null()) last = dynamic_cast<const PMultigridOperator*>(held->getConstTpetraOperator().get());
+    if (last != nullptr && !last->getRangeMap()->isSameAs(*A->getRangeMap())) last = nullptr;
+  }
+  if (last != nullptr) ++coarseLevelReuses_;
+  Teuchos::RCP<Operator> op = Teuchos::rcp(new PMultigridOperator(A, *parameters_, last));
   Teuchos::RCP<Thyra::LinearOpBase<double>> thyraOp =
       Thyra::tpetraLinearOp<double, LocalOrdinal, GlobalOrdinal, CrsMatrix::node_type>(
           Thyra::tpetraVectorSpace<double>(op->getRangeMap()), Thyra::tpetraVectorSpace<double>(op->getDomainMap()), op);

@@ -47,8 +47,21 @@ public:
   Teuchos::RCP<const Teuchos::ParameterList> getParameterList() const override;
   Teuchos::RCP<const Teuchos::ParameterList> getValidParameters() const override;
 
+  /// @brief Whether the next setup keeps the corner level (P^T A P and its
+  /// MueLu hierarchy, three quarters of a setup) of the cycle the
+  /// preconditioner holds, and makes only the smoothers on the new matrix.
+  /// The Newton solver asks for it while the contact set does not change
+  /// and the tangent's pattern did (NewtonSolver.cpp): the smoothers must
+  /// see the matrix they sweep, the corner correction may be that of a
+  /// nearby one. Stays as set until set again.
+  void keepCoarseLevel(bool keep) { keepCoarseLevel_ = keep; }
+  /// Setups that kept the corner level (for tests and diagnostics).
+  int coarseLevelReuses() const { return coarseLevelReuses_; }
+
 private:
   Teuchos::RCP<Teuchos::ParameterList> parameters_;
+  bool keepCoarseLevel_ = false;
+  mutable int coarseLevelReuses_ = 0;
 };
 
 }  // namespace coulomb::solver

@@ -442,17 +442,19 @@ RunSummary Simulation::run() {
     for (const auto& row : report.iterations) norms.push_back(row.residualNorm);
     summary.stepResidualNorms.push_back(norms);
     std::vector<long long> active, changed, stickSlip;
-    std::vector<int> kept;
+    std::vector<int> kept, coarseKept;
     for (const auto& row : report.iterations) {
       active.push_back(row.activeNodes);
       changed.push_back(row.changedNodes);
       stickSlip.push_back(row.stickSlipChanged);
       kept.push_back(row.preconditionerReused ? 1 : 0);
+      coarseKept.push_back(row.coarseLevelKept ? 1 : 0);
     }
     summary.stepActiveNodes.push_back(active);
     summary.stepChangedNodes.push_back(changed);
     summary.stepStickSlipChanged.push_back(stickSlip);
     summary.stepPreconditionerKept.push_back(kept);
+    summary.stepCoarseLevelKept.push_back(coarseKept);
     writeStep(next, {double(iterations), double(report.linearIterations()), double(summary.cutbacks)});
     if (console_ && verbosity_ == Verbosity::Quiet)
       *console_ << "step " << deckStep << " of " << settings_.numberOfSteps
@@ -465,6 +467,9 @@ RunSummary Simulation::run() {
                 << std::setprecision(2) << seconds << " s" << std::defaultfloat
                 << (report.preconditionerReuses() > 0
                         ? ", preconditioner kept in " + std::to_string(report.preconditionerReuses()) + " solves"
+                        : std::string())
+                << (report.coarseLevelReuses() > 0
+                        ? ", corner level kept in " + std::to_string(report.coarseLevelReuses()) + " solves"
                         : std::string())
                 << "\n";
     if (contact_) reportContact(summary, next);

@@ -47,6 +47,8 @@ struct RunSummary {
   std::vector<std::vector<long long>> stepStickSlipChanged;  ///< frictional contact: stick <-> slip changes (else -1)
   /// contact: 1 where the solve that led to the iterate kept the last preconditioner (row 0: 0)
   std::vector<std::vector<int>> stepPreconditionerKept;
+  /// contact, P-Multigrid: 1 where that solve built new smoothers under the last corner level
+  std::vector<std::vector<int>> stepCoarseLevelKept;
   std::vector<long long> pairMaximumActive;              ///< contact: most active nodes of each pair in a step
   std::vector<PairRecord> pairs;  ///< contact: per pair, peak pressure and the last step's forces (the summary's)
 };
