@@ -66,6 +66,7 @@ def parse_console(text):
         out["solver_wall_s"] = float(m.group(5))
     out["step_newton"] = [int(x) for x in re.findall(r"step \d+ converged: t = \S+, (\d+) Newton", text)]
     out["preconditioner_kept"] = sum(int(x) for x in re.findall(r"preconditioner kept in (\d+) solves", text))
+    out["corner_level_kept"] = sum(int(x) for x in re.findall(r"corner level kept in (\d+) solves", text))
     out["step_time"] = [float(x) for x in re.findall(r"step \d+ converged: t = (" + NUM + r"),", text)]
     out["not_converged"] = len(re.findall(r"not converged after \d+ iterations", text))
     return out

@@ -136,6 +136,7 @@ def result_keys(case, keys, console, timers, stdout, run):
         "load_avg_1m_before": round(run["load_before"], 2),
         "linear_iterations_per_solve": linear_per_solve,
         "preconditioner_kept": console.get("preconditioner_kept"),
+        "corner_level_kept": console.get("corner_level_kept"),
         "active_per_iteration": console.get("iteration_active"),
     })
     out.update(timer_keys(timers, console))
