@@ -278,6 +278,21 @@ TEST(TripletAssembly, MatrixSumLeavesOutNegligibleNewEntries) {
   third->apply(x, actual);
   actual.update(-1.0, expected, 1.0);
   EXPECT_LT(actual.normInf(), 1e-13);
+  // The bound is each row's own: with K's rows at 3e-6 and 3e6 (even and odd
+  // rows), 1e-10 in a new column is kept in the small rows (3e-5 of them)
+  // and left out in the large ones (3e-17); a bound relative to the whole
+  // matrix (or none) would keep none (all) of them.
+  std::vector<linalg::MatrixTriplet> scaled;
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
+    const GlobalOrdinal g = map->getGlobalElement(static_cast<LocalOrdinal>(i));
+    scaled.push_back({g, g, g % 2 == 0 ? 3e-6 : 3e6});
+  }
+  const auto scaledK = linalg::matrixFromTriplets(scaled, map);
+  auto small = shiftedFromLastRank(*map, 1.0, n / 2);
+  for (auto& t : small) t.value = 1e-10;
+  linalg::MatrixSum other;
+  const auto withSmall = other.add(*scaledK, small);
+  EXPECT_EQ(withSmall->getGlobalNumEntries(), static_cast<Tpetra::global_size_t>(n + (n + 1) / 2));
 }
 
 // MatrixSum with K = its last result, refilled by the caller (the model

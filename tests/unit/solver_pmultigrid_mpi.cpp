@@ -75,9 +75,11 @@ TEST(PMultigrid, CornerLevelIsKeptOnlyWhileTheSetIsUnchanged) {
       ++cornerKept;
       EXPECT_FALSE(whole[k]);
       // Row k is the iterate the solve from iterate k - 1 reached: not the
-      // step's first solve, and the set at k - 1 was unchanged.
+      // step's first solve, and the set at k - 1 was unchanged (frictionless:
+      // no stick/slip count, -1).
       ASSERT_GE(k, 2u) << "step " << s + 1;
       EXPECT_EQ(changed[k - 1], 0) << "step " << s + 1 << ", iteration " << k;
+      EXPECT_LE(kept.summary.stepStickSlipChanged[s][k - 1], 0) << "step " << s + 1 << ", iteration " << k;
     }
   }
   std::cout << solves << " solves: preconditioner kept in " << wholeKept << ", corner level in " << cornerKept << "\n";

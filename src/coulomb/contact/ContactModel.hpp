@@ -112,7 +112,8 @@ public:
   Teuchos::RCP<CrsMatrix> tangentStorage() const { return tangentSum_.last(); }
   /// The storage holds many couplings the contact no longer has (a sliding
   /// contact leaves them as zeros, as the pattern only grows in place): more
-  /// than twice the interface triplets of the last iterate beyond K's. Local.
+  /// than twice the interface triplets of the last iterate (the ones not
+  /// negligible, linalg::MatrixSum) beyond K's. Local.
   bool tangentStorageStale() const { return tangentSum_.grownBeyond(2.0); }
   /// The storage turned back into the K of the last condensedTangent() call
   /// (linalg::MatrixSum::restoreBase): for a constant K (linear elasticity)

@@ -17,11 +17,14 @@
 namespace coulomb::linalg {
 
 /// A triplet is left out when it is at most this fraction of its row's
-/// largest entry in K (some hundred units of round-off of that entry): the
+/// largest entry in K (some fifty units of round-off of that entry): the
 /// tangent it would refine is solved to 1e-3 .. 1e-10 relative, so no
-/// Newton iterate can tell. Exact zeros are left out whatever the row. The
-/// entries this leaves out in practice are 1e-20 to 1e-45 of their rows
-/// (MatrixSum::add).
+/// Newton iterate can tell. Exact zeros are left out whatever the row; a
+/// NaN is kept (the solve must see it). The entries this leaves out in
+/// practice are 1e-20 to 1e-45 of their rows (MatrixSum::add). The scale is
+/// K's row, not the sum's: a contact row whose K part cancels (T - I = -1
+/// on an active slave row) keeps entries of the penalty's size, which a
+/// penalty 1e14 times below E/h would fall under.
 constexpr double kNegligibleEntry = 1e-14;
 
 namespace {
@@ -234,7 +237,7 @@ Teuchos::RCP<CrsMatrix> MatrixSum::add(const CrsMatrix& K, const std::vector<Mat
       for (auto k = kRows(row); k < kRows(row + 1); ++k) scale = std::max(scale, std::abs(kValues(k)));
       bound = kNegligibleEntry * scale;
     }
-    return std::abs(value) > bound;
+    return !(std::abs(value) <= bound);  // a NaN is kept
   };
   std::vector<char> keep(triplets.size() + routed.received.size(), 0);
   std::vector<std::size_t> start(numRows + 1, 0);

@@ -80,7 +80,8 @@ public:
   /// Successful restoreBase() calls (for tests and diagnostics).
   int restores() const { return restores_; }
   /// This rank's last result has more than `factor` x (triplets of the last
-  /// call) entries beyond those of the last K that was not the result itself.
+  /// call that were not negligible) entries beyond those of the last K that
+  /// was not the result itself.
   /// In place the pattern only grows (a sliding contact leaves its old
   /// couplings as zeros): the caller then assembles K apart once, to start
   /// from the current couplings again. Local.
@@ -106,7 +107,7 @@ private:
   std::vector<std::size_t> baseStart_;
   std::vector<std::pair<LocalOrdinal, double>> baseRowEntries_;
   std::size_t baseEntryCount_ = 0;  ///< entries of the last K that was not the result itself
-  std::size_t lastTriplets_ = 0;  ///< triplets of rows this rank owns in the last call (its own and received)
+  std::size_t lastTriplets_ = 0;  ///< triplets of rows this rank owns in the last call (its own and received; kept ones)
 };
 
 /// @brief Collective: adds every rank's `entries` into `owned` (on its map).

@@ -92,18 +92,23 @@ public:
       p.set("Tolerance", linearTolerance(forcing_->settings, normF, forcing_->previousNormF, forcing_->target()));
       forcing_->previousNormF = normF;
     }
+    auto* pMultigrid = reuse_ ? dynamic_cast<PMultigridFactory*>(prec_factory_.get()) : nullptr;
     if (reuse_) {
-      auto* pMultigrid = dynamic_cast<PMultigridFactory*>(prec_factory_.get());
       Reuse reuse = preconditionerReuse();
       if (reuse == Reuse::CoarseLevel && pMultigrid == nullptr) reuse = Reuse::None;  // only P-Multigrid has one
       reuse_->lastReused = reuse == Reuse::Whole;
-      reuse_->lastCoarseKept = reuse == Reuse::CoarseLevel;
       updatePreconditioner_ = reuse != Reuse::Whole;  // NOX builds prec_ before each solve unless told not to
       if (pMultigrid != nullptr) pMultigrid->keepCoarseLevel(reuse == Reuse::CoarseLevel);
       ++reuse_->solves;
     }
+    // What the factory did, not what was asked (it builds anew without a cycle to take the corner level from).
+    const int coarseKeptBefore = pMultigrid != nullptr ? pMultigrid->coarseLevelReuses() : 0;
+    auto recordCoarseLevel = [&] {
+      if (reuse_) reuse_->lastCoarseKept = pMultigrid != nullptr && pMultigrid->coarseLevelReuses() > coarseKeptBefore;
+    };
     try {
       const auto status = NOX::Thyra::Group::computeNewton(p);
+      recordCoarseLevel();
       exactPrescribedUpdate();  // also for a solve that missed its tolerance: NOX may still take the step
       return status;
     } catch (const Thyra::CatastrophicSolveFailure& e) {
@@ -115,6 +120,7 @@ public:
       // iterate fails the finite-value test and the step is cut back, with
       // this reason. Anything else (a preconditioner or a direct solver may
       // throw on some ranks only) still ends the run.
+      recordCoarseLevel();
       if (linearFailure_->empty()) *linearFailure_ = lastLine(e.what());
       newton_vec_->init(std::numeric_limits<double>::quiet_NaN());
       is_valid_newton_dir_ = true;
@@ -155,11 +161,12 @@ private:
   ///    derives from the graph), so a matrix completed in place with a new
   ///    column map would be read through stale indices.
   /// Where only the structure differs, a preconditioner that can keeps the
-  /// part that never reads the matrix: P-Multigrid its corner level
-  /// (PMultigridFactory::keepCoarseLevel), with new smoothers on the new
-  /// matrix. The condensed tangent's pattern often grows by a few small
-  /// couplings while the set stays (HEX20 hertz3d --ref 1: in 5 of the 6
-  /// solves that had the set of the solve before).
+  /// part that holds no reference into the matrix: P-Multigrid its corner
+  /// level (PMultigridFactory::keepCoarseLevel: P^T A P of the earlier
+  /// matrix), with new smoothers on the new one. The condensed tangent's
+  /// pattern often grows by a few small couplings while the set stays
+  /// (HEX20 hertz3d --ref 1: in all 6 of 17 solves that had the set of the
+  /// solve before).
   /// The set and the solve status are the same on every rank; the structure
   /// is agreed on. Records the structure whenever a new one is built.
   enum class Reuse { None, Whole, CoarseLevel };

@@ -123,7 +123,9 @@ void PMultigridFactory::initializePrec(const Teuchos::RCP<const Thyra::LinearOpS
   // The cycle this preconditioner holds now, if any (NOX passes the same
   // object at every setup), for its corner level.
   const PMultigridOperator* last = nullptr;
-  if (keepCoarseLevel_) {
+  const bool keep = keepCoarseLevel_;
+  keepCoarseLevel_ = false;
+  if (keep) {
     using ThyraOp = Thyra::TpetraLinearOp<double, LocalOrdinal, GlobalOrdinal, CrsMatrix::node_type>;
     const auto held = Teuchos::rcp_dynamic_cast<const ThyraOp>(target->getUnspecifiedPrecOp());
     if (!held.is_null()) last = dynamic_cast<const PMultigridOperator*>(held->getConstTpetraOperator().get());

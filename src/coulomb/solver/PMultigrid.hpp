@@ -53,14 +53,14 @@ public:
   /// The Newton solver asks for it while the contact set does not change
   /// and the tangent's pattern did (NewtonSolver.cpp): the smoothers must
   /// see the matrix they sweep, the corner correction may be that of a
-  /// nearby one. Stays as set until set again.
+  /// nearby one. For the next setup only (a setup clears it).
   void keepCoarseLevel(bool keep) { keepCoarseLevel_ = keep; }
   /// Setups that kept the corner level (for tests and diagnostics).
   int coarseLevelReuses() const { return coarseLevelReuses_; }
 
 private:
   Teuchos::RCP<Teuchos::ParameterList> parameters_;
-  bool keepCoarseLevel_ = false;
+  mutable bool keepCoarseLevel_ = false;
   mutable int coarseLevelReuses_ = 0;
 };
 
