@@ -146,6 +146,18 @@ Vector cosineVector(const Teuchos::RCP<const Map>& map, double phase) {
   return x;
 }
 
+/// |sum x - (K + S) x|_inf, S the matrix of the triplets `s`.
+double sumError(const CrsMatrix& K, const std::vector<linalg::MatrixTriplet>& s, const CrsMatrix& sum, const Vector& x) {
+  const auto map = K.getRowMap();
+  Vector expected(map), part(map), actual(map);
+  K.apply(x, expected);
+  linalg::matrixFromTriplets(s, map)->apply(x, part);
+  expected.update(1.0, part, 1.0);
+  sum.apply(x, actual);
+  actual.update(-1.0, expected, 1.0);
+  return actual.normInf();
+}
+
 /// From the last rank only: (g, (g + shift) mod n, scale (g + 1)) for every row g.
 std::vector<linalg::MatrixTriplet> shiftedFromLastRank(const Map& map, double scale, GlobalOrdinal shift) {
   std::vector<linalg::MatrixTriplet> s;
@@ -168,13 +180,7 @@ TEST(TripletAssembly, MatrixSumReusesTheMatrixWhenThePatternRepeats) {
   auto triplets = [&](double scale, GlobalOrdinal shift) { return shiftedFromLastRank(*map, scale, shift); };
   const Vector x = cosineVector(map, 0.3);
   auto expectSum = [&](const Teuchos::RCP<CrsMatrix>& sum, const std::vector<linalg::MatrixTriplet>& s) {
-    Vector expected(map), part(map), actual(map);
-    K->apply(x, expected);
-    linalg::matrixFromTriplets(s, map)->apply(x, part);
-    expected.update(1.0, part, 1.0);
-    sum->apply(x, actual);
-    actual.update(-1.0, expected, 1.0);
-    EXPECT_LT(actual.normInf(), 1e-13);
+    EXPECT_LT(sumError(*K, s, *sum, x), 1e-13);
   };
   linalg::MatrixSum sum;
   const auto s1 = triplets(1.0, n / 2), s2 = triplets(-2.0, n / 2), s3 = triplets(1.0, 1);
@@ -260,24 +266,13 @@ TEST(TripletAssembly, MatrixSumLeavesOutNegligibleNewEntries) {
   EXPECT_EQ(second.get(), first.get());
   EXPECT_EQ(sum.reuses(), 1);
   EXPECT_EQ(second->getGlobalNumEntries(), entries);
-  Vector expected(map), part(map), actual(map);
-  K->apply(x, expected);
-  linalg::matrixFromTriplets(s2, map)->apply(x, part);
-  expected.update(1.0, part, 1.0);
-  second->apply(x, actual);
-  actual.update(-1.0, expected, 1.0);
-  EXPECT_LT(actual.normInf(), 1e-13);
+  EXPECT_LT(sumError(*K, s2, *second, x), 1e-13);
   // 1e-6 of the row is kept: one new entry per row (the zeros still left out).
   const auto s3 = withNegligible(1e-6);
   auto third = sum.add(*K, s3);
   EXPECT_EQ(sum.reuses(), 1);
   EXPECT_EQ(third->getGlobalNumEntries(), entries + static_cast<Tpetra::global_size_t>(n));
-  K->apply(x, expected);
-  linalg::matrixFromTriplets(s3, map)->apply(x, part);
-  expected.update(1.0, part, 1.0);
-  third->apply(x, actual);
-  actual.update(-1.0, expected, 1.0);
-  EXPECT_LT(actual.normInf(), 1e-13);
+  EXPECT_LT(sumError(*K, s3, *third, x), 1e-13);
   // The bound is each row's own: with K's rows at 3e-6 and 3e6 (even and odd
   // rows), 1e-10 in a new column is kept in the small rows (3e-5 of them)
   // and left out in the large ones (3e-17); a bound relative to the whole
