@@ -94,8 +94,7 @@ public:
     }
     auto* pMultigrid = reuse_ ? dynamic_cast<PMultigridFactory*>(prec_factory_.get()) : nullptr;
     if (reuse_) {
-      Reuse reuse = preconditionerReuse();
-      if (reuse == Reuse::CoarseLevel && pMultigrid == nullptr) reuse = Reuse::None;  // only P-Multigrid has one
+      const Reuse reuse = preconditionerReuse();  // CoarseLevel is a full setup but for P-Multigrid
       reuse_->lastReused = reuse == Reuse::Whole;
       updatePreconditioner_ = reuse != Reuse::Whole;  // NOX builds prec_ before each solve unless told not to
       if (pMultigrid != nullptr) pMultigrid->keepCoarseLevel(reuse == Reuse::CoarseLevel);
